@@ -41,6 +41,7 @@ TEST_F(ShaderErrors, EveryLibrarySnippetCompilesAlone) {
     // Each snippet must compile when included on its own into the matching stage.
     for (const auto& file : librarySnippets()) {
         const std::string name(file.name);
+        if (name.starts_with("rrc/internal/")) continue;   // stage files of rrc's own programs
         const bool vertex = name.ends_with(".vert");
         const std::string host = "app/host_" + std::to_string(&file - librarySnippets().data()) + (vertex ? ".vert" : ".frag");
         library.add(host, "#version 450 core\n#include <" + name + ">\nvoid main() {}\n");

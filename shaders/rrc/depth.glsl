@@ -1,17 +1,16 @@
-// Depth conventions shared by the cache snippets: view-space linear depth from window depth for
-// the standard [-1,1] and the reversed-Z [0,1] (glClipControl ZERO_TO_ONE) perspective.
+// Depth conventions of the cache: linear view depth from window depth, for the standard
+// [-1,1] perspective and for reversed-Z with glClipControl(ZERO_TO_ONE). A far plane <= 0 means
+// an infinite far plane.
 #ifndef RRC_DEPTH_GLSL
 #define RRC_DEPTH_GLSL
 
-// Positive distance along the view axis for window depth `d` of a perspective projection with
-// planes near/far. `reversed` selects reversed-Z with ZERO_TO_ONE clip control (far may be inf).
 float rrc_linearDepth(float d, float near, float far, bool reversed) {
     if (reversed) {
         // d = near*(far - z) / (z*(far - near)); with an infinite far plane d = near / z.
-        return isinf(far) ? near / max(d, 1e-30) : (near * far) / (near + d * (far - near));
+        return far > 0.0 ? (near * far) / (near + d * (far - near)) : near / d;
     }
     float ndc = 2.0 * d - 1.0;
-    return (2.0 * near * far) / (far + near - ndc * (far - near));
+    return far > 0.0 ? (2.0 * near * far) / (far + near - ndc * (far - near)) : (2.0 * near) / (1.0 - ndc);
 }
 
 #endif

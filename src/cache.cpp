@@ -1,0 +1,192 @@
+// rrc::Cache creation: descriptor validation, the double-buffered targets, defines for programs.
+#include "cache_impl.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace rrc {
+namespace {
+
+struct FormatInfo { GLenum format; const char* name; };
+constexpr FormatInfo kFormats[] = {
+    {GL_RGBA8, "GL_RGBA8"}, {GL_RGBA16F, "GL_RGBA16F"}, {GL_RGBA32F, "GL_RGBA32F"}, {GL_R32F, "GL_R32F"},
+    {GL_RG16F, "GL_RG16F"}, {GL_RG32F, "GL_RG32F"}, {GL_R16F, "GL_R16F"}, {GL_R11F_G11F_B10F, "GL_R11F_G11F_B10F"},
+    {GL_RGB10_A2, "GL_RGB10_A2"}, {GL_R32UI, "GL_R32UI"}, {GL_RG32UI, "GL_RG32UI"}, {GL_RGBA32UI, "GL_RGBA32UI"},
+};
+
+bool supportedFormat(GLenum format) {
+    return std::any_of(std::begin(kFormats), std::end(kFormats), [&](auto& f) { return f.format == format; });
+}
+
+Texture makeTexture(GLenum format, int width, int height, GLenum filter) {
+    Texture t = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), 1, format, width, height);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, filter);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, filter);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+Result<void> validate(const CacheDesc& d) {
+    auto bad = [](std::string why) { return fail(LogId::CacheInvalidDesc, "CacheDesc: " + why); };
+    if (d.width <= 0 || d.height <= 0)
+        return bad("width and height must be positive (got " + std::to_string(d.width) + "x" + std::to_string(d.height) + ")");
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (d.width > maxSize || d.height > maxSize)
+        return fail(LogId::CacheTooLarge, "CacheDesc: " + std::to_string(d.width) + "x" + std::to_string(d.height) +
+                                              " exceeds GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize));
+    if (d.payloads.empty() || d.payloads.size() > 4)
+        return bad("1 to 4 payloads required (got " + std::to_string(d.payloads.size()) + ")");
+    for (size_t i = 0; i < d.payloads.size(); ++i) {
+        const auto& p = d.payloads[i];
+        if (!supportedFormat(p.format)) return bad("payload " + std::to_string(i) + ": unsupported format 0x" + std::to_string(p.format));
+        if (isIntegerFormat(p.format) && p.resample != Resample::Nearest)
+            return bad("payload " + std::to_string(i) + ": integer formats resample Nearest only");
+    }
+    if (d.depthInPayload && d.payloads[0].format != GL_RGBA32F && d.payloads[0].format != GL_RGBA16F)
+        return bad("depthInPayload needs payload 0 in GL_RGBA32F or GL_RGBA16F");
+    if (!(d.depthTolerance > 0.0f) || !std::isfinite(d.depthTolerance))
+        return bad("depthTolerance must be finite and > 0 (got " + std::to_string(d.depthTolerance) + ")");
+    if (!(d.slopeTolerance >= 0.0f) || !std::isfinite(d.slopeTolerance)) return bad("slopeTolerance must be finite and >= 0");
+    if (!(d.maxScale >= 0.0f) || !std::isfinite(d.maxScale)) return bad("maxScale must be finite and >= 0");
+    GLint units = 0;
+    glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
+    if (d.firstTextureUnit < 0 || d.firstTextureUnit + kPayloadUnitOffset + 4 > units)
+        return bad("firstTextureUnit out of range");
+    GLint bindings = 0;
+    glGetIntegerv(GL_MAX_UNIFORM_BUFFER_BINDINGS, &bindings);
+    if (d.uniformBinding < 0 || d.uniformBinding >= bindings) return bad("uniformBinding out of range");
+    return {};
+}
+
+} // namespace
+
+bool isIntegerFormat(GLenum format) {
+    return format == GL_R32UI || format == GL_RG32UI || format == GL_RGBA32UI;
+}
+
+Result<void> Cache::Impl::createTargets() {
+    for (auto& t : targets) {
+        t = CacheTargets{};
+        t.framebuffer = createFramebuffer();
+        std::vector<GLenum> drawBuffers;
+        auto attach = [&](const Texture& texture) {
+            const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(drawBuffers.size());
+            glNamedFramebufferTexture(t.framebuffer.id(), attachment, texture.id(), 0);
+            drawBuffers.push_back(attachment);
+        };
+        for (const auto& p : desc.payloads) {
+            t.payloads.push_back(makeTexture(p.format, desc.width, desc.height, isIntegerFormat(p.format) ? GL_NEAREST : GL_LINEAR));
+            attach(t.payloads.back());
+        }
+        if (desc.objectIds) { t.ids = makeTexture(GL_R32UI, desc.width, desc.height, GL_NEAREST); attach(t.ids); }
+        if (desc.age) { t.age = makeTexture(GL_R16UI, desc.width, desc.height, GL_NEAREST); attach(t.age); }
+        if (desc.stats) { t.outcomes = makeTexture(GL_R8UI, desc.width, desc.height, GL_NEAREST); attach(t.outcomes); }
+        t.depth = makeTexture(GL_DEPTH_COMPONENT32F, desc.width, desc.height, desc.bilinearDepth ? GL_LINEAR : GL_NEAREST);
+        glNamedFramebufferTexture(t.framebuffer.id(), GL_DEPTH_ATTACHMENT, t.depth.id(), 0);
+        glNamedFramebufferDrawBuffers(t.framebuffer.id(), static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
+        if (auto r = checkFramebuffer(t.framebuffer, "rrc::Cache target"); !r) return r;
+    }
+    invalidated = true;
+    return {};
+}
+
+Result<Cache> Cache::create(const CacheDesc& desc) {
+    if (auto r = validate(desc); !r) return r.error();
+    Cache cache;
+    cache.impl_ = std::make_unique<Impl>();
+    Impl& s = *cache.impl_;
+    s.desc = desc;
+    if (auto r = s.createTargets(); !r) return r.error();
+    s.block = createBuffer();
+    glNamedBufferStorage(s.block.id(), sizeof(CacheBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    s.emptyVao = createVertexArray();
+    s.probe = createQuery(GL_ANY_SAMPLES_PASSED);
+    for (auto& slot : s.slots) {
+        slot.counts = createBuffer();
+        glNamedBufferStorage(slot.counts.id(), 8 * sizeof(uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    s.uploadBlock();
+    return cache;
+}
+
+Cache::Cache() = default;
+Cache::Cache(Cache&&) noexcept = default;
+Cache& Cache::operator=(Cache&&) noexcept = default;
+Cache::~Cache() = default;
+
+Cache::Impl::~Impl() {
+    for (auto& slot : slots)
+        if (slot.fence) glDeleteSync(slot.fence);
+}
+
+Result<void> Cache::resize(int width, int height) {
+    if (!impl_) return fail(LogId::CacheInvalidObject, "Cache::resize on an empty (moved-from or default) cache");
+    CacheDesc d = impl_->desc;
+    d.width = width;
+    d.height = height;
+    if (auto r = validate(d); !r) return r;
+    impl_->desc = d;
+    if (auto r = impl_->createTargets(); !r) return r;
+    impl_->uploadBlock();
+    return {};
+}
+
+void Cache::invalidate() {
+    if (!impl_) { logError(LogId::CacheInvalidObject, "Cache::invalidate on an empty (moved-from or default) cache"); return; }
+    impl_->invalidated = true;
+    impl_->uploadBlock();
+}
+
+std::vector<Define> Cache::defines() const {
+    if (!impl_) { logError(LogId::CacheInvalidObject, "Cache::defines on an empty (moved-from or default) cache"); return {}; }
+    const CacheDesc& d = impl_->desc;
+    std::vector<Define> out{{"RRC_CACHE_BINDING", std::to_string(d.uniformBinding)},
+                            {"RRC_PAYLOAD_COUNT", std::to_string(d.payloads.size())},
+                            {"RRC_DEPTH_UNIT", std::to_string(impl_->unit(kDepthUnitOffset))}};
+    static const char* const fetch[] = {"rrc_sampleNearest", "rrc_sampleBilinear", "rrc_sampleBicubic"};
+    for (size_t i = 0; i < d.payloads.size(); ++i) {
+        const std::string n = "RRC_PAYLOAD" + std::to_string(i);
+        out.push_back({n + "_UNIT", std::to_string(impl_->unit(kPayloadUnitOffset + static_cast<int>(i)))});
+        out.push_back({n + "_SAMPLER", isIntegerFormat(d.payloads[i].format) ? "usampler2D" : "sampler2D"});
+        out.push_back({n + "_FETCH", fetch[static_cast<int>(d.payloads[i].resample)]});
+    }
+    int location = static_cast<int>(d.payloads.size());
+    if (d.objectIds) {
+        out.push_back({"RRC_OBJECT_IDS"});
+        out.push_back({"RRC_ID_UNIT", std::to_string(impl_->unit(kIdUnitOffset))});
+        out.push_back({"RRC_ID_LOCATION", std::to_string(location++)});
+    }
+    if (d.age) {
+        out.push_back({"RRC_AGE"});
+        out.push_back({"RRC_AGE_UNIT", std::to_string(impl_->unit(kAgeUnitOffset))});
+        out.push_back({"RRC_AGE_LOCATION", std::to_string(location++)});
+    }
+    if (d.stats) {
+        out.push_back({"RRC_STATS"});
+        out.push_back({"RRC_OUTCOME_LOCATION", std::to_string(location++)});
+    }
+    if (d.depthInPayload) out.push_back({"RRC_DEPTH_IN_PAYLOAD"});
+    if (!d.bilinearDepth) out.push_back({"RRC_NEAREST_DEPTH"});
+    return out;
+}
+
+const CacheDesc& Cache::desc() const { return impl_->desc; }
+int Cache::width() const { return impl_ ? impl_->desc.width : 0; }
+int Cache::height() const { return impl_ ? impl_->desc.height : 0; }
+uint64_t Cache::frame() const { return impl_ ? impl_->frame : 0; }
+bool Cache::valid() const { return impl_ && impl_->previousValid(); }
+bool Cache::staticFrame() const { return impl_ && impl_->staticFrame; }
+GLuint Cache::payload(int i) const { return impl_ && i >= 0 && i < static_cast<int>(impl_->desc.payloads.size()) ? impl_->cur().payloads[i].id() : 0; }
+GLuint Cache::previousPayload(int i) const { return impl_ && i >= 0 && i < static_cast<int>(impl_->desc.payloads.size()) ? impl_->prev().payloads[i].id() : 0; }
+GLuint Cache::depth() const { return impl_ ? impl_->cur().depth.id() : 0; }
+GLuint Cache::previousDepth() const { return impl_ ? impl_->prev().depth.id() : 0; }
+GLuint Cache::outcomes() const { return impl_ ? impl_->cur().outcomes.id() : 0; }
+GLuint Cache::framebuffer() const { return impl_ ? impl_->cur().framebuffer.id() : 0; }
+const ViewState& Cache::view() const { return impl_->view; }
+const ViewState& Cache::cacheTimeView() const { return impl_->cacheView; }
+
+} // namespace rrc
