@@ -52,6 +52,12 @@ std::string normalizePath(std::string_view path) {
     return out;
 }
 
+bool isConditional(std::string_view directive) {
+    for (std::string_view d : {"#if", "#else", "#elif", "#endif"})
+        if (directive.starts_with(d)) return true;
+    return false;
+}
+
 std::string directoryOf(std::string_view file) {
     const auto slash = file.rfind('/');
     return slash == std::string_view::npos ? std::string() : std::string(file.substr(0, slash + 1));
@@ -105,6 +111,9 @@ private:
                                                      ": #version is only allowed on the first line of a stage file");
             } else if (pos <= text.size() || !row.empty()) {
                 out_ << row << '\n';
+                // An include inside a conditional block that the compiler skips also skips the
+                // #line that restored this file's numbering: restore it after every conditional.
+                if (isConditional(directive)) out_ << "#line " << line + 1 << ' ' << index << '\n';
             }
             ++line;
         }

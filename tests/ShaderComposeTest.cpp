@@ -48,6 +48,17 @@ TEST(ShaderCompose, ResolvesLibraryAndRelativeIncludesOnce) {
     EXPECT_EQ(composed.value().files, (std::vector<std::string>{"app/demo/main.frag", "rrc/x.glsl", "app/common/y.glsl"}));
 }
 
+TEST(ShaderCompose, RestoresLineNumbersAfterConditionalBlocks) {
+    ShaderLibrary lib;
+    lib.add("app/inc.glsl", "float a;\nfloat b;\n");
+    lib.add("app/c.frag", "#version 450 core\n#ifndef SKIP\n#include \"inc.glsl\"\n#endif\nvoid main() {}\n");
+    auto composed = composeShader("app/c.frag", {}, lib);
+    ASSERT_TRUE(composed.ok());
+    EXPECT_EQ(composed.value().text,
+              "#version 450 core\n#line 2 0\n#ifndef SKIP\n#line 3 0\n#line 1 1\nfloat a;\nfloat b;\n"
+              "#line 4 0\n#endif\n#line 5 0\nvoid main() {}\n");
+}
+
 TEST(ShaderCompose, DetectsIncludeCycles) {
     LogCapture log;
     ShaderLibrary lib;

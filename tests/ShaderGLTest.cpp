@@ -28,6 +28,16 @@ TEST_F(ShaderErrors, ErrorInStageFileAfterDefinesKeepsItsLine) {
     EXPECT_NE(built.error().message.find("app/e2.vert:4"), std::string::npos) << built.error().message;
 }
 
+TEST_F(ShaderErrors, ErrorAfterASkippedIncludeKeepsItsLine) {
+    LogCapture log;
+    library.add("app/skip/big.glsl", "float a;\nfloat b;\nfloat c;\nfloat d;\n");
+    library.add("app/skip/main.frag", "#version 450 core\n#ifdef NEVER\n#include \"big.glsl\"\n#endif\nout vec4 o;\n"
+                                      "void main() { o = vec4(oops); }\n");
+    auto built = buildProgram({.fragment = "app/skip/main.frag"}, library);
+    ASSERT_FALSE(built.ok());
+    EXPECT_NE(built.error().message.find("app/skip/main.frag:6"), std::string::npos) << built.error().message;
+}
+
 TEST_F(ShaderErrors, LinkErrorIsReported) {
     LogCapture log;
     library.add("app/l.vert", "#version 450 core\nout vec3 v_missing_in_frag;\nvoid main() { gl_Position = vec4(0.0); v_missing_in_frag = vec3(0); }\n");
