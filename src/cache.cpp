@@ -170,6 +170,8 @@ std::vector<Define> Cache::defines() const {
         out.push_back({"RRC_OUTCOME_LOCATION", std::to_string(location++)});
     }
     if (d.depthInPayload) out.push_back({"RRC_DEPTH_IN_PAYLOAD"});
+    if (d.refresh) out.push_back({"RRC_REFRESH"});
+    if (d.maxScale > 0.0f) out.push_back({"RRC_MAX_SCALE"});
     if (!d.bilinearDepth) out.push_back({"RRC_NEAREST_DEPTH"});
     return out;
 }

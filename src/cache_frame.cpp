@@ -67,6 +67,8 @@ Result<void> Cache::beginFrame(const FrameDesc& f) {
         return fail(LogId::CacheBadArgument, "Cache::beginFrame: lambda must be in [0, 1), got " + std::to_string(f.lambda));
     if (f.refresh.policy == RefreshPolicy::Random && !(f.refresh.fraction >= 0.0f && f.refresh.fraction <= 1.0f))
         return fail(LogId::CacheBadArgument, "Cache::beginFrame: refresh fraction must be in [0, 1]");
+    if (f.refresh.policy != RefreshPolicy::None && !s.desc.refresh)
+        return fail(LogId::CacheBadArgument, "Cache::beginFrame: a refresh policy needs CacheDesc::refresh");
     if (f.refresh.blockSize == 0 || f.refresh.period == 0)
         return fail(LogId::CacheBadArgument, "Cache::beginFrame: refresh blockSize and period must be >= 1");
 
@@ -167,12 +169,14 @@ Result<void> Cache::render(ControlFlow flow, const std::function<void(Pass)>& dr
         pass(Pass::Miss, strict, true, true);
     } else {
         pass(Pass::Lookup, strict, true, true);
-        glBeginQuery(GL_ANY_SAMPLES_PASSED, s.probe.id());
-        pass(Pass::Probe, strict, false, false);
-        glEndQuery(GL_ANY_SAMPLES_PASSED);
-        glBeginConditionalRender(s.probe.id(), GL_QUERY_WAIT);
+        if (s.frameDesc.skipEmptyMissPass) {
+            glBeginQuery(GL_ANY_SAMPLES_PASSED, s.probe.id());
+            pass(Pass::Probe, strict, false, false);
+            glEndQuery(GL_ANY_SAMPLES_PASSED);
+            glBeginConditionalRender(s.probe.id(), GL_QUERY_WAIT);
+        }
         pass(Pass::Miss, strict, true, true);
-        glEndConditionalRender();
+        if (s.frameDesc.skipEmptyMissPass) glEndConditionalRender();
     }
     // Leave the depth state as GL's defaults, the output framebuffer bound.
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

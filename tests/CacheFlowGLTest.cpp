@@ -3,6 +3,7 @@
 // refresh exactly their scheduled pixels, and the recursive filter has the variance it promises.
 #include "support/cache_scene.hpp"
 #include "support/gl_test.hpp"
+#include "support/log_capture.hpp"
 
 #include <cmath>
 
@@ -79,7 +80,18 @@ TEST_F(CacheFlow, FrameWhereNothingMovedDrawsNothing) {
     EXPECT_TRUE(cache.staticFrame());
     EXPECT_TRUE(scene.passes.empty());
     EXPECT_EQ(readRGBA(cache.payload(0)), image);
-    // A refresh policy, forced misses or a moved camera all need a real frame.
+    // A refresh policy (which needs a cache compiled for it), forced misses or a moved camera
+    // all need a real frame.
+    {
+        LogCapture log;
+        EXPECT_FALSE(cache.beginFrame({.view = camera.view(), .projection = camera.projection(1.5, true),
+                                       .refresh = {.policy = RefreshPolicy::Full}}).ok());
+        EXPECT_TRUE(log.has(LogId::CacheBadArgument));
+    }
+    cache = make({.refresh = true});
+    ASSERT_TRUE(scene.frame(cache, ControlFlow::TwoPass, camera, objects));
+    ASSERT_TRUE(scene.frame(cache, ControlFlow::TwoPass, camera, objects, {.objectsMoved = false}));
+    EXPECT_TRUE(cache.staticFrame());
     ASSERT_TRUE(scene.frame(cache, ControlFlow::TwoPass, camera, objects, {.refresh = {.policy = RefreshPolicy::RoundRobin}, .objectsMoved = false}));
     EXPECT_FALSE(cache.staticFrame());
     ASSERT_TRUE(scene.frame(cache, ControlFlow::TwoPass, camera, objects, {.forcedMisses = true, .objectsMoved = false}));
@@ -99,7 +111,7 @@ TEST_F(CacheFlow, RefreshPoliciesRefreshExactlyTheirScheduledPixels) {
     const Object objects[] = {{.model = wall, .prevModel = wall}};
     Camera camera;
     for (const RefreshDesc& refresh : policies) {
-        Cache cache = make();
+        Cache cache = make({.refresh = true});
         CacheScene scene(cache);
         ASSERT_TRUE(scene.frame(cache, ControlFlow::TwoPass, camera, objects));
         for (int f = 0; f < 3; ++f) {
@@ -121,7 +133,7 @@ TEST_F(CacheFlow, RefreshPoliciesRefreshExactlyTheirScheduledPixels) {
 
 TEST_F(CacheFlow, RoundRobinRefreshBoundsTheAgeOfEveryPixel) {
     for (uint32_t period : {2u, 4u, 7u}) {
-        Cache cache = make({.age = true});
+        Cache cache = make({.age = true, .refresh = true});
         CacheScene scene(cache);
         const Object objects[] = {{.model = wall, .prevModel = wall}};
         Camera camera;

@@ -45,7 +45,9 @@ struct CacheDesc {
     float depthTolerance = 0.01f; // relative tolerance on LINEAR view depth, see docs/cache.md
     float slopeTolerance = 1.0f;  // plus this many times the depth change across one pixel
     float maxScale = 0.0f;        // force a miss when the lookup magnifies or minifies by more
-                                  // than this factor (0: off)
+                                  // than this factor (0: off, and compiled out of the lookup)
+    bool refresh = false;         // lookups honour FrameDesc::refresh; off compiles the refresh
+                                  // schedule out (it costs even when no policy is active)
     glm::vec4 clearColor{0.0f};   // payload value where nothing was drawn
     int firstTextureUnit = 8;     // the cache binds its textures to units from here on
     int uniformBinding = 7;       // binding point of the rrc_CacheBlock uniform block
@@ -54,12 +56,15 @@ struct CacheDesc {
 struct FrameDesc {
     glm::dmat4 view{1.0};
     glm::dmat4 projection{1.0};   // perspective; near/far are derived from it
-    RefreshDesc refresh{};
+    RefreshDesc refresh{};        // needs CacheDesc::refresh unless the policy is None
     float lambda = 0.6f;          // recursive filter weight for rrc_blend (0 <= lambda < 1)
     bool forcedMisses = false;    // the shaders force misses (never-cache objects, predicates):
                                   // a frame where nothing moved then still needs its miss pass
     bool objectsMoved = true;     // false when no object moved since the cache was written
                                   // (e.g. from MotionHistory::anyMoved())
+    bool skipEmptyMissPass = true;// TwoPass/ThreePass: a depth-only probe pass counts the pixels
+                                  // left to the miss pass, which is not issued when none are
+                                  // (occlusion query + conditional render); false saves the probe
 };
 
 enum class ControlFlow {

@@ -93,15 +93,19 @@ rrc_Lookup rrc_lookup(bool forceMiss) {
     float slope = fwidth(expected);
     l.uv = p.xy / p.w * 0.5 + 0.5;
     bool scaleMiss = false;
-    if (rrc_tolerance.z > 0.0) {
+#ifdef RRC_MAX_SCALE
+    {
         vec2 dx = dFdx(l.uv) * rrc_cacheSize.xy, dy = dFdy(l.uv) * rrc_cacheSize.xy;
         float big = max(length(dx), length(dy)), small = min(length(dx), length(dy));
         scaleMiss = big > rrc_tolerance.z || small * rrc_tolerance.z < 1.0;
     }
+#endif
     if (rrc_cacheDepth.w < 0.5) {
         l.outcome = RRC_INVALID;
+#ifdef RRC_REFRESH
     } else if (rrc_refreshScheduled(uvec2(gl_FragCoord.xy))) {
         l.outcome = RRC_REFRESHED;
+#endif
     } else if (forceMiss || (rrc_drawFlags & 1u) != 0u || scaleMiss) {
         l.outcome = RRC_FORCED;
     } else if (p.w <= 0.0 || any(lessThan(l.uv, vec2(0.0))) || any(greaterThan(l.uv, vec2(1.0)))) {
