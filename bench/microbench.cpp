@@ -48,7 +48,7 @@ struct Bench {
     VertexArray vao;
     glm::dmat4 model{1.0}, view{1.0}, projection{1.0};
     Framebuffer bruteTarget;
-    Texture bruteColor, bruteDepth;
+    Texture bruteColor, bruteDepth, permutation;
 
     Result<void> init() {
         auto c = Cache::create({.width = width, .height = height, .payloads = {{.format = payloadFormat, .resample = resample}},
@@ -90,6 +90,8 @@ struct Bench {
         glEnableVertexArrayAttrib(vao.id(), 0);
         glVertexArrayAttribFormat(vao.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(vao.id(), 0, 0);
+        permutation = bench::permutationTexture(1);
+        glBindTextureUnit(5, permutation.id());
         model = glm::scale(glm::translate(glm::dmat4(1.0), {0, 0, -10}), {40, 40, 1});
         view = glm::lookAt(glm::dvec3(0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
         projection = perspectiveReversedZ(1.0, double(width) / height, 0.1);
@@ -134,11 +136,14 @@ struct Bench {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
+    bool probe = true;   // FrameDesc::skipEmptyMissPass
+
     void cachedFrame(ControlFlow flow, float missFraction, bool clustered, bool moved, bool cut) {
         if (cut) cache.invalidate();
         glFinish();
         const auto frameStart = std::chrono::steady_clock::now();
-        (void)cache.beginFrame({.view = view, .projection = projection, .forcedMisses = missFraction > 0, .objectsMoved = moved});
+        (void)cache.beginFrame({.view = view, .projection = projection, .forcedMisses = missFraction > 0, .objectsMoved = moved,
+                                .skipEmptyMissPass = probe});
         (void)cache.render(flow, [&](Pass pass) {
             if (passTiming) glFinish();
             const auto t0 = std::chrono::steady_clock::now();
@@ -163,7 +168,7 @@ struct Bench {
     }
 
     Record run(std::string name, double missFraction, std::string pattern, const std::function<void()>& frame) {
-        std::fprintf(stderr, "  %-12s miss %5.1f%% %-9s", name.c_str(), missFraction * 100, pattern.c_str());
+        std::fprintf(stderr, "  %-17s miss %5.1f%% %-9s", name.c_str(), missFraction * 100, pattern.c_str());
         Record r{std::move(name), std::move(pattern), missFraction, bench::timeFrames(frame, warmup, frames)};
         std::fprintf(stderr, " median %7.2f ms  min %7.2f ms\n", r.timing.median, r.timing.min);
         return r;
@@ -211,6 +216,10 @@ int main(int argc, char** argv) {
             for (double f : {0.0, 0.05, 0.10, 0.50, 1.0})
                 records.push_back(b.run(flow == ControlFlow::OnePass ? "one-pass" : "two-pass", f, clustered ? "clustered" : "scattered",
                                         [&] { b.cachedFrame(flow, float(f), clustered, true, false); }));
+    b.probe = false;
+    for (double f : {0.0, 0.05, 0.10})
+        records.push_back(b.run("two-pass-no-probe", f, "clustered", [&] { b.cachedFrame(ControlFlow::TwoPass, float(f), true, true, false); }));
+    b.probe = true;
     const double full = records[0].timing.median;
     std::fprintf(stderr, "relative to full shading (%.2f ms): lookup-only %.1f%%, static %.1f%%, camera cut %.1f%%\n", full,
                  100 * records[1].timing.median / full, 100 * records[2].timing.median / full, 100 * records[3].timing.median / full);

@@ -3,6 +3,7 @@
 // and miss (PASS_MISS). MISS_FRACTION of the pixels are forced to miss, in 8x8 blocks
 // (CLUSTERED) or pixel by pixel.
 #include "perlin.glsl"
+#include <rrc/hash.glsl>
 #ifndef BRUTE
 #include <rrc/lookup.frag>
 #endif
