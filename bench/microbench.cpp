@@ -2,7 +2,7 @@
 // full-screen plane: brute-force shading, the lookup alone, one- and two-pass flows at forced
 // miss fractions (clustered in 8x8 blocks or scattered), a frame where nothing moved, and a
 // camera cut. Wall clock around glFinish; median and min over repeated frames after warm-up.
-#include "frame_timer.hpp"
+#include "../demos/support/timing.hpp"
 
 #include <rrc/cache.hpp>
 #include <rrc/context.hpp>
@@ -30,7 +30,7 @@ using namespace rrc;
 struct Record {
     std::string name, pattern;
     double missFraction = 0;
-    bench::Timing timing;
+    demo::Timing timing;
 };
 
 struct Bench {
@@ -55,6 +55,7 @@ struct Bench {
                                 .stats = false, .depthInPayload = depthInPayload, .bilinearDepth = bilinearDepth});
         if (!c) return c.error();
         cache = std::move(c).value();
+        library.add(demo::supportShaders());
         library.add(bench::shaders());
         for (const std::string& entry : overrides) {
             const auto eq = entry.find('=');
@@ -66,7 +67,7 @@ struct Bench {
             library.add(name, text.str());   // later additions win over the embedded snippet
         }
         auto defines = cache.defines();
-        defines.push_back({"BENCH_OCTAVES", std::to_string(octaves)});
+        defines.push_back({"DEMO_OCTAVES", std::to_string(octaves)});
         for (const std::string& d : extraDefines) defines.push_back({d});
         auto build = [&](const char* frag, std::vector<Define> extra) -> Result<Program> {
             auto d = defines;
@@ -90,7 +91,7 @@ struct Bench {
         glEnableVertexArrayAttrib(vao.id(), 0);
         glVertexArrayAttribFormat(vao.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(vao.id(), 0, 0);
-        permutation = bench::permutationTexture(1);
+        permutation = demo::permutationTexture(1);
         glBindTextureUnit(5, permutation.id());
         model = glm::scale(glm::translate(glm::dmat4(1.0), {0, 0, -10}), {40, 40, 1});
         view = glm::lookAt(glm::dvec3(0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
@@ -169,7 +170,7 @@ struct Bench {
 
     Record run(std::string name, double missFraction, std::string pattern, const std::function<void()>& frame) {
         std::fprintf(stderr, "  %-17s miss %5.1f%% %-9s", name.c_str(), missFraction * 100, pattern.c_str());
-        Record r{std::move(name), std::move(pattern), missFraction, bench::timeFrames(frame, warmup, frames)};
+        Record r{std::move(name), std::move(pattern), missFraction, demo::timeFrames(frame, warmup, frames)};
         std::fprintf(stderr, " median %7.2f ms  min %7.2f ms\n", r.timing.median, r.timing.min);
         return r;
     }

@@ -2,7 +2,7 @@
 // Brute force (BRUTE), or the cached variants: one-pass branch, two-pass lookup (PASS_LOOKUP)
 // and miss (PASS_MISS). MISS_FRACTION of the pixels are forced to miss, in 8x8 blocks
 // (CLUSTERED) or pixel by pixel.
-#include "perlin.glsl"
+#include <support/shaders/perlin.glsl>
 #include <rrc/hash.glsl>
 #ifndef BRUTE
 #include <rrc/lookup.frag>
@@ -14,9 +14,9 @@ uniform uint u_clustered;
 
 vec4 shade() {
 #ifdef RRC_DEPTH_IN_PAYLOAD
-    return vec4(bench_marble(v_world * 2.0), 1.0 / gl_FragCoord.w);
+    return vec4(demo_marble(v_world * 2.0), 1.0 / gl_FragCoord.w);
 #else
-    return vec4(bench_marble(v_world * 2.0), 1.0);
+    return vec4(demo_marble(v_world * 2.0), 1.0);
 #endif
 }
 

@@ -1,4 +1,4 @@
-#include "frame_timer.hpp"
+#include "timing.hpp"
 
 #include <rrc/gl.hpp>
 #include <rrc/refresh.hpp>
@@ -7,7 +7,7 @@
 #include <chrono>
 #include <vector>
 
-namespace rrc::bench {
+namespace rrc::demo {
 
 Timing timeFrames(const std::function<void()>& frame, int warmup, int frames) {
     for (int i = 0; i < warmup; ++i) frame();
@@ -36,4 +36,4 @@ Texture permutationTexture(uint32_t seed) {
     return t;
 }
 
-} // namespace rrc::bench
+} // namespace rrc::demo
