@@ -15,6 +15,30 @@ constexpr FormatInfo kFormats[] = {
     {GL_RGB10_A2, "GL_RGB10_A2"}, {GL_R32UI, "GL_R32UI"}, {GL_RG32UI, "GL_RG32UI"}, {GL_RGBA32UI, "GL_RGBA32UI"},
 };
 
+// How rrc_storeAmortized (shaders/rrc/blend.glsl) rounds for a payload format: 0 = stores are
+// exact, 1 = UNORM with `bits` per channel, 2 = small float with `bits` mantissa bits per channel
+// (0: channel absent) and largest finite values `max`.
+struct StoreQuantization { int kind; const char* bits; const char* max; };
+
+StoreQuantization storeQuantization(GLenum format) {
+    switch (format) {
+    case GL_RGBA8: return {1, "ivec4(8, 8, 8, 8)", "vec4(1.0)"};
+    case GL_RGB10_A2: return {1, "ivec4(10, 10, 10, 2)", "vec4(1.0)"};
+    case GL_RGBA16F: return {2, "ivec4(10, 10, 10, 10)", "vec4(65504.0)"};
+    case GL_RG16F: return {2, "ivec4(10, 10, 0, 0)", "vec4(65504.0)"};
+    case GL_R16F: return {2, "ivec4(10, 0, 0, 0)", "vec4(65504.0)"};
+    case GL_R11F_G11F_B10F: return {2, "ivec4(6, 6, 5, 0)", "vec4(65024.0, 65024.0, 64512.0, 0.0)"};
+    default: return {0, "ivec4(0)", "vec4(0.0)"};   // 32-bit float and integer formats
+    }
+}
+
+std::string hex(GLenum value) {
+    static const char digits[] = "0123456789ABCDEF";
+    std::string out;
+    do { out.insert(out.begin(), digits[value & 15u]); value >>= 4; } while (value);
+    return "0x" + out;
+}
+
 bool supportedFormat(GLenum format) {
     return std::any_of(std::begin(kFormats), std::end(kFormats), [&](auto& f) { return f.format == format; });
 }
@@ -42,7 +66,7 @@ Result<void> validate(const CacheDesc& d) {
         return bad("1 to 4 payloads required (got " + std::to_string(d.payloads.size()) + ")");
     for (size_t i = 0; i < d.payloads.size(); ++i) {
         const auto& p = d.payloads[i];
-        if (!supportedFormat(p.format)) return bad("payload " + std::to_string(i) + ": unsupported format 0x" + std::to_string(p.format));
+        if (!supportedFormat(p.format)) return bad("payload " + std::to_string(i) + ": unsupported format " + hex(p.format));
         if (isIntegerFormat(p.format) && p.resample != Resample::Nearest)
             return bad("payload " + std::to_string(i) + ": integer formats resample Nearest only");
     }
@@ -85,8 +109,9 @@ Result<void> Cache::Impl::createTargets() {
         if (desc.objectIds) { t.ids = makeTexture(GL_R32UI, desc.width, desc.height, GL_NEAREST); attach(t.ids); }
         if (desc.age) { t.age = makeTexture(GL_R16UI, desc.width, desc.height, GL_NEAREST); attach(t.age); }
         if (desc.stats) { t.outcomes = makeTexture(GL_R8UI, desc.width, desc.height, GL_NEAREST); attach(t.outcomes); }
-        t.depth = makeTexture(GL_DEPTH_COMPONENT32F, desc.width, desc.height, desc.bilinearDepth ? GL_LINEAR : GL_NEAREST);
-        glNamedFramebufferTexture(t.framebuffer.id(), GL_DEPTH_ATTACHMENT, t.depth.id(), 0);
+        // Stencil marks the pixels the lookup pass resolved, for the miss pass after a prepass.
+        t.depth = makeTexture(GL_DEPTH32F_STENCIL8, desc.width, desc.height, desc.bilinearDepth ? GL_LINEAR : GL_NEAREST);
+        glNamedFramebufferTexture(t.framebuffer.id(), GL_DEPTH_STENCIL_ATTACHMENT, t.depth.id(), 0);
         glNamedFramebufferDrawBuffers(t.framebuffer.id(), static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
         if (auto r = checkFramebuffer(t.framebuffer, "rrc::Cache target"); !r) return r;
     }
@@ -153,6 +178,10 @@ std::vector<Define> Cache::defines() const {
         out.push_back({n + "_UNIT", std::to_string(impl_->unit(kPayloadUnitOffset + static_cast<int>(i)))});
         out.push_back({n + "_SAMPLER", isIntegerFormat(d.payloads[i].format) ? "usampler2D" : "sampler2D"});
         out.push_back({n + "_FETCH", fetch[static_cast<int>(d.payloads[i].resample)]});
+        const StoreQuantization q = storeQuantization(d.payloads[i].format);
+        out.push_back({n + "_QUANT", std::to_string(q.kind)});
+        out.push_back({n + "_BITS", q.bits});
+        out.push_back({n + "_MAX", q.max});
     }
     int location = static_cast<int>(d.payloads.size());
     if (d.objectIds) {
@@ -176,19 +205,43 @@ std::vector<Define> Cache::defines() const {
     return out;
 }
 
-const CacheDesc& Cache::desc() const { return impl_->desc; }
+namespace {
+
+const Cache::Impl* alive(const std::unique_ptr<Cache::Impl>& impl, const char* what) {
+    if (!impl) logError(LogId::CacheInvalidObject, std::string(what) + " on an empty (moved-from or default) cache");
+    return impl.get();
+}
+
+GLuint payloadOf(const std::unique_ptr<Cache::Impl>& impl, int i, bool previous, const char* what) {
+    const Cache::Impl* s = alive(impl, what);
+    if (!s) return 0;
+    const int count = static_cast<int>(s->desc.payloads.size());
+    if (i < 0 || i >= count) {
+        logError(LogId::CacheBadArgument, std::string(what) + ": payload index " + std::to_string(i) +
+                                              " out of range (the cache has " + std::to_string(count) + ")");
+        return 0;
+    }
+    return (previous ? s->prev() : s->cur()).payloads[static_cast<size_t>(i)].id();
+}
+
+const CacheDesc kEmptyDesc{};
+const ViewState kEmptyView{};
+
+} // namespace
+
+const CacheDesc& Cache::desc() const { return alive(impl_, "Cache::desc") ? impl_->desc : kEmptyDesc; }
 int Cache::width() const { return impl_ ? impl_->desc.width : 0; }
 int Cache::height() const { return impl_ ? impl_->desc.height : 0; }
 uint64_t Cache::frame() const { return impl_ ? impl_->frame : 0; }
 bool Cache::valid() const { return impl_ && impl_->previousValid(); }
 bool Cache::staticFrame() const { return impl_ && impl_->staticFrame; }
-GLuint Cache::payload(int i) const { return impl_ && i >= 0 && i < static_cast<int>(impl_->desc.payloads.size()) ? impl_->cur().payloads[i].id() : 0; }
-GLuint Cache::previousPayload(int i) const { return impl_ && i >= 0 && i < static_cast<int>(impl_->desc.payloads.size()) ? impl_->prev().payloads[i].id() : 0; }
-GLuint Cache::depth() const { return impl_ ? impl_->cur().depth.id() : 0; }
-GLuint Cache::previousDepth() const { return impl_ ? impl_->prev().depth.id() : 0; }
-GLuint Cache::outcomes() const { return impl_ ? impl_->cur().outcomes.id() : 0; }
-GLuint Cache::framebuffer() const { return impl_ ? impl_->cur().framebuffer.id() : 0; }
-const ViewState& Cache::view() const { return impl_->view; }
-const ViewState& Cache::cacheTimeView() const { return impl_->cacheView; }
+GLuint Cache::payload(int i) const { return payloadOf(impl_, i, false, "Cache::payload"); }
+GLuint Cache::previousPayload(int i) const { return payloadOf(impl_, i, true, "Cache::previousPayload"); }
+GLuint Cache::depth() const { return alive(impl_, "Cache::depth") ? impl_->cur().depth.id() : 0; }
+GLuint Cache::previousDepth() const { return alive(impl_, "Cache::previousDepth") ? impl_->prev().depth.id() : 0; }
+GLuint Cache::outcomes() const { return alive(impl_, "Cache::outcomes") ? impl_->cur().outcomes.id() : 0; }
+GLuint Cache::framebuffer() const { return alive(impl_, "Cache::framebuffer") ? impl_->cur().framebuffer.id() : 0; }
+const ViewState& Cache::view() const { return alive(impl_, "Cache::view") ? impl_->view : kEmptyView; }
+const ViewState& Cache::cacheTimeView() const { return alive(impl_, "Cache::cacheTimeView") ? impl_->cacheView : kEmptyView; }
 
 } // namespace rrc

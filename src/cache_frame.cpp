@@ -126,8 +126,7 @@ void Cache::Impl::clearCurrent() {
     const GLuint zero[4] = {};
     for (bool present : {desc.objectIds, desc.age, desc.stats})
         if (present) glClearNamedFramebufferuiv(fb, GL_COLOR, buffer++, zero);
-    const float far = desc.reversedZ ? 0.0f : 1.0f;
-    glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far);
+    glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, desc.reversedZ ? 0.0f : 1.0f, 0);
 }
 
 Result<void> Cache::render(ControlFlow flow, const std::function<void(Pass)>& draw) {
@@ -161,22 +160,39 @@ Result<void> Cache::render(ControlFlow flow, const std::function<void(Pass)>& dr
         draw(p);
     };
     const bool haveCache = s.previousValid();
+    // After a prepass every later pass shades only the nearest surface, once (GL_EQUAL).
+    const bool prepass = flow == ControlFlow::OnePass || s.frameDesc.depthPrepass;
+    if (prepass) pass(Pass::DepthPrepass, strict, true, false);
+    const GLenum shadeTest = prepass ? GL_EQUAL : strict;
     if (flow == ControlFlow::OnePass) {
-        pass(Pass::DepthPrepass, strict, true, false);
-        pass(Pass::Shade, GL_EQUAL, false, true);
+        pass(Pass::Shade, shadeTest, !prepass, true);
     } else if (!haveCache) {
         // Everything misses (first frame, cut, resize): no lookup, no probe, just the misses.
-        pass(Pass::Miss, strict, true, true);
+        pass(Pass::Miss, shadeTest, !prepass, true);
     } else {
-        pass(Pass::Lookup, strict, true, true);
+        // With a prepass, hits mark the stencil and the miss pass takes the unmarked pixels.
+        // Without one, the miss pass relies on the depth the hits wrote: a strict test passes
+        // only where the nearest surface was discarded.
+        if (prepass) {
+            glEnable(GL_STENCIL_TEST);
+            glStencilFunc(GL_ALWAYS, 1, 0xff);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        }
+        pass(Pass::Lookup, shadeTest, !prepass, true);
+        if (prepass) {
+            glStencilFunc(GL_EQUAL, 0, 0xff);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        }
         if (s.frameDesc.skipEmptyMissPass) {
             glBeginQuery(GL_ANY_SAMPLES_PASSED, s.probe.id());
-            pass(Pass::Probe, strict, false, false);
+            pass(Pass::Probe, shadeTest, false, false);
             glEndQuery(GL_ANY_SAMPLES_PASSED);
             glBeginConditionalRender(s.probe.id(), GL_QUERY_WAIT);
         }
-        pass(Pass::Miss, strict, true, true);
+        pass(Pass::Miss, shadeTest, !prepass, true);
         if (s.frameDesc.skipEmptyMissPass) glEndConditionalRender();
+        glDisable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 0, 0xff);
     }
     // Leave the depth state as GL's defaults, the output framebuffer bound.
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

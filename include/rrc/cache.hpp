@@ -62,6 +62,10 @@ struct FrameDesc {
                                   // a frame where nothing moved then still needs its miss pass
     bool objectsMoved = true;     // false when no object moved since the cache was written
                                   // (e.g. from MotionHistory::anyMoved())
+    bool depthPrepass = true;     // TwoPass/ThreePass: a depth-only pass first, so the lookup and
+                                  // miss passes shade each pixel once (GL_EQUAL) and the miss pass
+                                  // finds its pixels by stencil; a scene without overdraw does not
+                                  // need it (OnePass always has one)
     bool skipEmptyMissPass = true;// TwoPass/ThreePass: a depth-only probe pass counts the pixels
                                   // left to the miss pass, which is not issued when none are
                                   // (occlusion query + conditional render); false saves the probe
@@ -69,13 +73,14 @@ struct FrameDesc {
 
 enum class ControlFlow {
     OnePass,    // depth prepass, then one shading pass branching between hit and miss (fig. 6.5a)
-    TwoPass,    // lookup pass shades hits and discards misses; the miss pass runs only where the
-                // depth test lets it (fig. 6.5b); skipped entirely when nothing missed
+    TwoPass,    // lookup pass shades hits and discards misses; the miss pass runs only on the
+                // pixels left (fig. 6.5b, by stencil after a depth prepass, else by the depth
+                // test); skipped entirely when nothing missed
     ThreePass,  // as TwoPass writing payloads only, then a full-screen pass shades from them
 };
 
 enum class Pass {
-    DepthPrepass,  // OnePass: depth only (colour writes are masked)
+    DepthPrepass,  // depth only (colour writes are masked)
     Shade,         // OnePass: lookup and branch
     Lookup,        // Two/ThreePass: lookup; hit -> write, miss -> discard
     Probe,         // Two/ThreePass: depth only, counts pixels left for the miss pass
@@ -101,6 +106,24 @@ struct Stats {
         return total ? static_cast<double>(hits) / static_cast<double>(total) : 0.0;
     }
 };
+
+// How the implementation rounds a fragment shader's float output when it is stored into a
+// colour format (measured by probeStoreRounding). llvmpipe truncates GL_RGBA16F and
+// GL_R11F_G11F_B10F stores and rounds GL_RGBA8 to nearest; GPUs round to nearest.
+enum class StoreRounding {
+    Exact,        // 32-bit float and integer formats: nothing to round
+    Nearest,      // to the nearest representable value
+    TowardZero,   // truncation
+    Other,        // anything else (e.g. toward +infinity)
+};
+std::string_view storeRoundingName(StoreRounding rounding);
+
+// Renders values between two representable neighbours of `format` into a 1x1 target and reads
+// them back. A diagnostic (it builds a program: tens of ms on llvmpipe): rrc_storeAmortized
+// (shaders/rrc/blend.glsl) rounds onto the format's grid itself, so the cache's amortization is
+// unbiased whichever way the store rounds. CacheInvalidDesc for formats a payload cannot have.
+// Restores the framebuffer, viewport, program and vertex array bindings it changes.
+Result<StoreRounding> probeStoreRounding(GLenum format);
 
 class Cache {
 public:

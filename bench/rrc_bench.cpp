@@ -1,0 +1,70 @@
+// rrc-bench, the main job: every demo's brute-force and cached variants over the same
+// deterministic camera path, timed (median and min over the measured frames after warm-up) and
+// compared with the reference. Writes out/results.json (and run.json) and the sample frames;
+// scripts/make-report.py turns them into out/results.csv, plots and out/report.md.
+#include "bench_scenes.hpp"
+
+#include <rrc/context.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+
+int main(int argc, char** argv) {
+    using namespace rrc;
+    CLI::App app{"rrc-bench: brute force against the reprojection cache, time against error"};
+    bench::Options o;
+    std::string backendOption = "auto", size = "1024x768", demos = "stereo";
+    app.add_option("--out", o.outDir, "output folder")->default_val("out");
+    app.add_option("--backend", backendOption, "auto, egl, osmesa or glfw")->default_val("auto");
+    app.add_option("--size", size, "frame size WxH")->default_val("1024x768");
+    app.add_option("--frames", o.frames, "measured frames per variant")->check(CLI::Range(1, 100000));
+    app.add_option("--warmup", o.warmup, "unmeasured frames first")->check(CLI::Range(0, 1000));
+    app.add_option("--scene", o.scene, "glTF scene, or 'procedural'")->default_val("assets/temple.glb");
+    app.add_option("--demos", demos, "comma-separated demos to run")->default_val("stereo");
+    app.add_flag("--smoke", o.smoke, "small and quick: 256x192, few frames (CI)");
+    app.add_flag("--full", o.full, "longer runs and sweeps");
+    CLI11_PARSE(app, argc, argv);
+    if (std::sscanf(size.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width <= 0 || o.height <= 0) {
+        std::fprintf(stderr, "rrc-bench: --size must be WxH, got '%s'\n", size.c_str());
+        return 1;
+    }
+    if (o.smoke) { o.width = 256; o.height = 192; o.frames = std::min(o.frames, 6); o.warmup = std::min(o.warmup, 2); }
+    if (o.full) o.frames = std::max(o.frames, 60);
+    auto backend = parseBackend(backendOption);
+    if (!backend) return 1;
+    std::error_code ec;
+    std::filesystem::create_directories(o.outDir, ec);
+    if (ec) { std::fprintf(stderr, "rrc-bench: cannot create %s: %s\n", o.outDir.c_str(), ec.message().c_str()); return 1; }
+    auto context = Context::create({.backend = backend.value(), .width = o.width, .height = o.height, .visible = false});
+    if (!context) return 1;
+    auto scene = bench::loadBenchScene(o.scene);
+    if (!scene) return 1;
+    std::fprintf(stderr, "rrc-bench: %s, %dx%d, %d frames after %d warm-up, %s on %s\n", scene.value().name.c_str(), o.width,
+                 o.height, o.frames, o.warmup, std::string(backendName(context.value().backend())).c_str(),
+                 context.value().renderer().c_str());
+    ShaderLibrary library;
+    library.add(demo::supportShaders());
+    library.add(bench::demoShaders());
+    std::vector<bench::Record> records;
+    for (const auto& d : {std::string("stereo")}) {
+        if (demos.find(d) == std::string::npos) continue;
+        auto rows = bench::runStereo(o, scene.value(), library);
+        if (rows.empty()) { std::fprintf(stderr, "rrc-bench: %s failed\n", d.c_str()); return 1; }
+        records.insert(records.end(), rows.begin(), rows.end());
+    }
+    bench::writeResults(o, records);
+    std::ofstream meta(o.outDir + "/run.json");
+    char date[32];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    std::string command;
+    for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+    meta << "{\"date\": \"" << date << "\", \"command\": \"" << command << "\", \"renderer\": \"" << context.value().renderer()
+         << "\", \"backend\": \"" << backendName(context.value().backend()) << "\", \"width\": " << o.width
+         << ", \"height\": " << o.height << ", \"frames\": " << o.frames << ", \"warmup\": " << o.warmup << "}\n";
+    std::fprintf(stderr, "rrc-bench: wrote %s/results.json\n", o.outDir.c_str());
+    return 0;
+}

@@ -1,0 +1,121 @@
+// rrc-bench's stereo rows: brute force against the view-independent and view-dependent cached
+// variants over one deterministic camera path; error of the left eye against brute force's.
+#include "bench_scenes.hpp"
+
+#include "stereo/stereo_renderer.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <rrc/projection.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace rrc::bench {
+namespace {
+
+using stereo::Variant;
+
+// An orbit around the scene's centre at eye height, looking slightly past the centre.
+glm::dmat4 pathView(const SceneBounds& b, int frame) {
+    const glm::dvec3 center = (b.min + b.max) * 0.5;
+    const double radius = 0.75 * glm::length(glm::dvec2(b.max.x - b.min.x, b.max.z - b.min.z));
+    const double angle = 0.6 + 0.004 * frame;
+    const glm::dvec3 eye = center + glm::dvec3(radius * std::sin(angle), 0.25 * (b.max.y - b.min.y), radius * std::cos(angle));
+    return glm::lookAt(eye, glm::dvec3(center.x, b.min.y + 0.35 * (b.max.y - b.min.y), center.z), glm::dvec3(0, 1, 0));
+}
+
+} // namespace
+
+std::vector<Record> runStereo(const Options& options, const BenchScene& scene, ShaderLibrary& library) {
+    stereo::StereoRenderer renderer;
+    if (auto r = renderer.init(options.width, options.height, library); !r) return {};
+    const glm::dmat4 projection = perspectiveReversedZ(0.9, double(options.width) / options.height, 0.1);
+    const double separation = 0.012 * glm::length(scene.bounds.max - scene.bounds.min);
+    // Frames whose left eye is compared against brute force (read back outside the timing).
+    const int checkEvery = std::max(1, options.frames / 4);
+    std::vector<OIIO::ImageBuf> reference, referenceSpecular;
+    std::vector<Record> records;
+    double bruteMedian = 0;
+    for (Variant variant : {Variant::Brute, Variant::Cached, Variant::CachedViewDependent}) {
+        Record r{.demo = "stereo", .variant = stereo::variantName(variant), .width = options.width, .height = options.height,
+                 .frames = options.frames};
+        std::fprintf(stderr, "stereo %-22s", r.variant.c_str());
+        std::vector<double> ms;
+        double sumError2 = 0, sumSpecError2 = 0, hits = 0, total = 0;
+        long pixels = 0, specPixels = 0;
+        for (int f = -options.warmup; f < options.frames; ++f) {
+            const auto eyes = stereo::eyeViews(pathView(scene.bounds, std::max(f, 0)), projection, separation);
+            glFinish();
+            const auto t0 = std::chrono::steady_clock::now();
+            renderer.render(variant, eyes, scene.draws);
+            glFinish();
+            const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            if (f < 0) continue;
+            ms.push_back(elapsed);
+            if (f % checkEvery != 0) continue;
+            OIIO::ImageBuf left = readTexture(renderer.leftEye(variant));
+            const size_t k = size_t(f / checkEvery);
+            if (variant == Variant::Brute) {
+                reference.push_back(left);
+                referenceSpecular.push_back(readTexture(renderer.specularMask()));
+                continue;
+            }
+            const ErrorStats e = errorAgainst(left, reference[k]);
+            sumError2 += e.rmse * e.rmse * double(e.pixels);
+            pixels += e.pixels;
+            const ErrorStats s = errorAgainst(left, reference[k], &referenceSpecular[k], 0.05f);
+            sumSpecError2 += s.rmse * s.rmse * double(s.pixels);
+            specPixels += s.pixels;
+            const Stats st = renderer.cache(variant).finishStats();
+            hits += double(st.hits);
+            total += double(st.hits + st.misses + st.forced + st.refreshed);
+        }
+        std::sort(ms.begin(), ms.end());
+        r.timing = {ms[ms.size() / 2], ms.front(), options.frames};
+        // Sample frames of the last measured view.
+        const std::string prefix = "stereo_" + r.variant;
+        r.images["anaglyph"] = savePng(options, renderer.anaglyph(), prefix + "_anaglyph.png");
+        r.images["left eye"] = savePng(options, renderer.leftEye(variant), prefix + "_left.png");
+        if (variant != Variant::Brute) {
+            Texture vis;
+            renderer.cache(variant).visualize(vis);
+            r.images["hits (green) / misses (red) / forced (blue)"] = savePng(options, vis.id(), prefix + "_hits.png");
+            r.images["difference x8"] = saveDifference(options, readTexture(renderer.leftEye(variant)),
+                                                       readTexture(renderer.leftEye(Variant::Brute)), 8.0f, prefix + "_diff.png");
+        }
+        double lookupMs = 0;
+        if (variant != Variant::Brute) {
+            // The lookup's own cost: the left eye again over a cache holding that same view.
+            const auto eyes = stereo::eyeViews(pathView(scene.bounds, options.frames), projection, separation);
+            lookupMs = demo::timeFrames([&] { renderer.renderLeftAgain(variant, eyes, scene.draws); }, 2, 5).median;
+        }
+        if (variant == Variant::Brute) {
+            bruteMedian = r.timing.median;
+            r.rmse = 0.0;
+            r.psnr = INFINITY;
+            r.speedup = 1.0;
+        } else {
+            r.rmse = std::sqrt(sumError2 / std::max(1L, pixels));
+            r.psnr = *r.rmse > 0 ? 20 * std::log10(1.0 / *r.rmse) : INFINITY;
+            const double specRmse = std::sqrt(sumSpecError2 / std::max(1L, specPixels));
+            r.extra["psnr_specular"] = specRmse > 0 ? 20 * std::log10(1.0 / specRmse) : INFINITY;
+            r.hitRate = total > 0 ? hits / total : 0.0;
+            r.speedup = bruteMedian / r.timing.median;
+            // Best case for this run: the right eye in full, the left eye at the measured lookup
+            // cost plus full shading for the measured miss fraction.
+            const double eye = bruteMedian / 2;
+            r.bestSpeedup = bruteMedian / (eye + lookupMs + (1.0 - *r.hitRate) * eye);
+            r.extra["lookup_ms"] = lookupMs;
+        }
+        std::fprintf(stderr, " median %7.2f ms  min %7.2f ms", r.timing.median, r.timing.min);
+        if (r.psnr && variant != Variant::Brute)
+            std::fprintf(stderr, "  PSNR %.1f dB (specular %.1f dB)  hit rate %.3f  x%.2f", *r.psnr, r.extra["psnr_specular"],
+                         *r.hitRate, *r.speedup);
+        std::fprintf(stderr, "\n");
+        records.push_back(std::move(r));
+    }
+    return records;
+}
+
+} // namespace rrc::bench
