@@ -18,6 +18,8 @@ struct Options {
     int frames = 30, warmup = 5;
     std::string scene = "assets/temple.glb";
     bool smoke = false, full = false;
+    double eyeSeparation = 0.065;   // stereo: metres (human interocular distance)
+    std::string flow = "two-pass";  // cached variants: one-pass, two-pass, two-pass-no-probe
 };
 
 struct Record {

@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
     app.add_option("--warmup", o.warmup, "unmeasured frames first")->check(CLI::Range(0, 1000));
     app.add_option("--scene", o.scene, "glTF scene, or 'procedural'")->default_val("assets/temple.glb");
     app.add_option("--demos", demos, "comma-separated demos to run")->default_val("stereo");
+    app.add_option("--eye-separation", o.eyeSeparation, "stereo: distance between the eyes, scene units")->default_val(0.065);
+    app.add_option("--flow", o.flow, "cached control flow")->check(CLI::IsMember({"one-pass", "two-pass", "two-pass-no-probe"}))->default_val("two-pass");
     app.add_flag("--smoke", o.smoke, "small and quick: 256x192, few frames (CI)");
     app.add_flag("--full", o.full, "longer runs and sweeps");
     CLI11_PARSE(app, argc, argv);

@@ -4,6 +4,8 @@
 
 #include "stereo/stereo_renderer.hpp"
 
+#include "common/camera.hpp"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <rrc/projection.hpp>
 
@@ -16,13 +18,18 @@ namespace {
 
 using stereo::Variant;
 
-// An orbit around the scene's centre at eye height, looking slightly past the centre.
+// The fly-through down the colonnade (demos/common/camera.hpp), on the fixed 60 Hz clock.
 glm::dmat4 pathView(const SceneBounds& b, int frame) {
-    const glm::dvec3 center = (b.min + b.max) * 0.5;
-    const double radius = 0.75 * glm::length(glm::dvec2(b.max.x - b.min.x, b.max.z - b.min.z));
-    const double angle = 0.6 + 0.004 * frame;
-    const glm::dvec3 eye = center + glm::dvec3(radius * std::sin(angle), 0.25 * (b.max.y - b.min.y), radius * std::cos(angle));
-    return glm::lookAt(eye, glm::dvec3(center.x, b.min.y + 0.35 * (b.max.y - b.min.y), center.z), glm::dvec3(0, 1, 0));
+    static const demo::FlyPath* path = nullptr;
+    static SceneBounds fitted;
+    static std::unique_ptr<demo::FlyPath> storage;
+    if (!path || fitted.min != b.min || fitted.max != b.max) {
+        storage = std::make_unique<demo::FlyPath>(demo::FlyPath::colonnade({b.min, b.max}));
+        path = storage.get();
+        fitted = b;
+    }
+    const demo::Pose pose = path->at(frame / 60.0);
+    return glm::lookAt(pose.position, pose.target, pose.up);
 }
 
 } // namespace
@@ -30,8 +37,9 @@ glm::dmat4 pathView(const SceneBounds& b, int frame) {
 std::vector<Record> runStereo(const Options& options, const BenchScene& scene, ShaderLibrary& library) {
     stereo::StereoRenderer renderer;
     if (auto r = renderer.init(options.width, options.height, library); !r) return {};
+    renderer.setFlow(options.flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass, options.flow == "two-pass");
     const glm::dmat4 projection = perspectiveReversedZ(0.9, double(options.width) / options.height, 0.1);
-    const double separation = 0.012 * glm::length(scene.bounds.max - scene.bounds.min);
+    const double separation = options.eyeSeparation;
     // Frames whose left eye is compared against brute force (read back outside the timing).
     const int checkEvery = std::max(1, options.frames / 4);
     std::vector<OIIO::ImageBuf> reference, referenceSpecular;

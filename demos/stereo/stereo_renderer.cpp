@@ -58,11 +58,13 @@ Result<void> StereoRenderer::init(int width, int height, ShaderLibrary& library,
         auto with = [&](const char* d) { auto x = defines; x.push_back({d}); return x; };
         auto lookup = build("stereo/shaders/stereo.frag", with("PASS_LOOKUP"));
         auto miss = build("stereo/shaders/stereo.frag", with("PASS_MISS"));
+        auto shade = build("stereo/shaders/stereo.frag", defines);
         auto depth = build("stereo/shaders/depth.frag", defines);
         if (!lookup) return lookup.error();
         if (!miss) return miss.error();
+        if (!shade) return shade.error();
         if (!depth) return depth.error();
-        out = {std::move(lookup).value(), std::move(miss).value(), std::move(depth).value()};
+        out = {std::move(lookup).value(), std::move(miss).value(), std::move(shade).value(), std::move(depth).value()};
         return {};
     };
     if (auto r = programsFor(cache_, false, cached_); !r) return r;
@@ -170,9 +172,12 @@ void StereoRenderer::renderEye(Variant variant, const glm::dmat4& view, const gl
                                std::span<const demo::DrawCall> scene) {
     Cache& cache = this->cache(variant);
     const Programs& programs = variant == Variant::CachedViewDependent ? cachedVD_ : cached_;
-    (void)cache.beginFrame({.view = view, .projection = projection, .forcedMisses = variant == Variant::CachedViewDependent});
-    (void)cache.render(ControlFlow::TwoPass, [&](Pass pass) {
-        const Program& program = pass == Pass::Lookup ? programs.lookup : pass == Pass::Miss ? programs.miss : programs.depthOnly;
+    (void)cache.beginFrame({.view = view, .projection = projection, .forcedMisses = variant == Variant::CachedViewDependent,
+                            .skipEmptyMissPass = probe_});
+    (void)cache.render(flow_, [&](Pass pass) {
+        const Program& program = pass == Pass::Lookup ? programs.lookup
+                               : pass == Pass::Miss   ? programs.miss
+                               : pass == Pass::Shade  ? programs.shade : programs.depthOnly;
         drawScene(program, view, projection, position, &cache, scene);
     });
     cache.endFrame();

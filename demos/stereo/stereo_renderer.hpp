@@ -23,6 +23,8 @@ EyeViews eyeViews(const glm::dmat4& centerView, const glm::dmat4& projection, do
 class StereoRenderer {
 public:
     Result<void> init(int width, int height, ShaderLibrary& library, int octaves = 5);
+    // The cached variants' control flow (default TwoPass with probe).
+    void setFlow(ControlFlow flow, bool probe) { flow_ = flow; probe_ = probe; }
     void render(Variant variant, const EyeViews& eyes, std::span<const demo::DrawCall> scene);
     // Cached variants: the left eye once more over a cache holding that same left eye (every
     // pixel hits): what the lookup alone costs.
@@ -35,7 +37,7 @@ public:
     Cache& cache(Variant v) { return v == Variant::CachedViewDependent ? cacheVD_ : cache_; }
 
 private:
-    struct Programs { Program lookup, miss, depthOnly; };
+    struct Programs { Program lookup, miss, shade, depthOnly; };
     void drawScene(const Program& program, const glm::dmat4& view, const glm::dmat4& projection, glm::dvec3 eye,
                    const Cache* cache, std::span<const demo::DrawCall> scene) const;
     void composite(GLuint left, GLuint right);
@@ -43,6 +45,8 @@ private:
                    std::span<const demo::DrawCall> scene);
 
     int width_ = 0, height_ = 0;
+    ControlFlow flow_ = ControlFlow::TwoPass;
+    bool probe_ = true;
     Cache cache_, cacheVD_;
     Programs cached_, cachedVD_;
     Program brute_, composite_;

@@ -1,6 +1,7 @@
 #version 450 core
 // One program per pass and variant:
 //   BRUTE                        full shading, no cache
+//   (no pass define)             one pass: lookup and branch (ControlFlow::OnePass)
 //   PASS_MISS                    full shading into the cache (right eye, and left-eye misses)
 //   PASS_LOOKUP                  left eye hit: copy the right eye's colour (view-independent)
 //   PASS_LOOKUP VIEW_DEPENDENT   left eye hit: cached view-independent part + this eye's specular;
@@ -36,6 +37,21 @@ void main() {
     rrc_Lookup l = rrc_lookup(false);
     if (!l.hit) discard;
     o_color = rrc_fetchPayload0(l);
+    rrc_writeCache(l);
+#elif !defined(PASS_MISS) && defined(VIEW_DEPENDENT)
+    // One pass, branching: reuse the view-independent part unless missed or saturated.
+    vec3 s = specular();
+    rrc_Lookup l = rrc_lookup(false);
+    vec3 vi = l.hit ? rrc_fetchPayload1(l).rgb : vec3(0.0);
+    if (l.hit && any(greaterThan(vi + s, vec3(1.0)))) { l.hit = false; l.outcome = RRC_FORCED; }
+    if (!l.hit) vi = viewIndependent();
+    o_color = vec4(vi + s, 1.0);
+    o_viewIndependent = vec4(vi, 1.0);
+    rrc_writeCache(l);
+#elif !defined(PASS_MISS)
+    // One pass, branching.
+    rrc_Lookup l = rrc_lookup(false);
+    o_color = l.hit ? rrc_fetchPayload0(l) : vec4(viewIndependent() + specular(), 1.0);
     rrc_writeCache(l);
 #else
     vec3 vi = viewIndependent(), s = specular();
