@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     if (ec) { std::fprintf(stderr, "rrc-bench: cannot create %s: %s\n", o.outDir.c_str(), ec.message().c_str()); return 1; }
     auto context = Context::create({.backend = backend.value(), .width = o.width, .height = o.height, .visible = false});
     if (!context) return 1;
-    auto scene = bench::loadBenchScene(o.scene);
+    auto scene = demo::loadDrawScene(o.scene);
     if (!scene) return 1;
     std::fprintf(stderr, "rrc-bench: %s, %dx%d, %d frames after %d warm-up, %s on %s\n", scene.value().name.c_str(), o.width,
                  o.height, o.frames, o.warmup, std::string(backendName(context.value().backend())).c_str(),

@@ -19,16 +19,8 @@ namespace {
 using stereo::Variant;
 
 // The fly-through down the colonnade (demos/common/camera.hpp), on the fixed 60 Hz clock.
-glm::dmat4 pathView(const SceneBounds& b, int frame) {
-    static const demo::FlyPath* path = nullptr;
-    static SceneBounds fitted;
-    static std::unique_ptr<demo::FlyPath> storage;
-    if (!path || fitted.min != b.min || fitted.max != b.max) {
-        storage = std::make_unique<demo::FlyPath>(demo::FlyPath::colonnade({b.min, b.max}));
-        path = storage.get();
-        fitted = b;
-    }
-    const demo::Pose pose = path->at(frame / 60.0);
+glm::dmat4 pathView(const demo::FlyPath& path, int frame) {
+    const demo::Pose pose = path.at(frame / 60.0);
     return glm::lookAt(pose.position, pose.target, pose.up);
 }
 
@@ -40,6 +32,7 @@ std::vector<Record> runStereo(const Options& options, const BenchScene& scene, S
     renderer.setFlow(options.flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass, options.flow == "two-pass");
     const glm::dmat4 projection = perspectiveReversedZ(0.9, double(options.width) / options.height, 0.1);
     const double separation = options.eyeSeparation;
+    const demo::FlyPath path = demo::FlyPath::colonnade({scene.boundsMin, scene.boundsMax});
     // Frames whose left eye is compared against brute force (read back outside the timing).
     const int checkEvery = std::max(1, options.frames / 4);
     std::vector<OIIO::ImageBuf> reference, referenceSpecular;
@@ -53,7 +46,7 @@ std::vector<Record> runStereo(const Options& options, const BenchScene& scene, S
         double sumError2 = 0, sumSpecError2 = 0, hits = 0, total = 0;
         long pixels = 0, specPixels = 0;
         for (int f = -options.warmup; f < options.frames; ++f) {
-            const auto eyes = stereo::eyeViews(pathView(scene.bounds, std::max(f, 0)), projection, separation);
+            const auto eyes = stereo::eyeViews(pathView(path, std::max(f, 0)), projection, separation);
             glFinish();
             const auto t0 = std::chrono::steady_clock::now();
             renderer.render(variant, eyes, scene.draws);
@@ -95,7 +88,7 @@ std::vector<Record> runStereo(const Options& options, const BenchScene& scene, S
         double lookupMs = 0;
         if (variant != Variant::Brute) {
             // The lookup's own cost: the left eye again over a cache holding that same view.
-            const auto eyes = stereo::eyeViews(pathView(scene.bounds, options.frames), projection, separation);
+            const auto eyes = stereo::eyeViews(pathView(path, options.frames), projection, separation);
             lookupMs = demo::timeFrames([&] { renderer.renderLeftAgain(variant, eyes, scene.draws); }, 2, 5).median;
         }
         if (variant == Variant::Brute) {
