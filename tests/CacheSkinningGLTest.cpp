@@ -74,6 +74,16 @@ TEST_F(CacheSkinning, PreviousBoneMatricesReprojectTheSkinnedSurface) {
         library.add("skin/test.frag", kSkinnedFrag);
         Program program = buildProgram({.vertex = "skin/test.vert", .fragment = "skin/test.frag", .defines = cache.defines()}, library).value();
         Camera camera{.eye = {0, 0, 6}, .target = {0, 0, 0}};
+        auto drawStrip = [&](Pass) {
+            const DrawMatrices m = cache.drawMatrices(glm::dmat4(1.0), glm::dmat4(1.0));
+            glUseProgram(program.id());
+            glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "u_mvp"), 1, GL_FALSE, &m.modelViewProj[0][0]);
+            cache.setDrawUniforms(program.id(), m);
+            glBindVertexArray(vao.id());
+            glDrawArrays(GL_TRIANGLE_STRIP, 0, GLsizei(vertices.size()));
+            glBindVertexArray(0);
+            glUseProgram(0);
+        };
         BoneHistory history;
         std::vector<glm::vec4> payload;
         std::vector<uint32_t> outcomes;
@@ -86,16 +96,7 @@ TEST_F(CacheSkinning, PreviousBoneMatricesReprojectTheSkinnedSurface) {
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, current.id());
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, previous.id());
             ASSERT_TRUE(cache.beginFrame({.view = camera.view(), .projection = camera.projection(128.0 / 96.0, true)}).ok());
-            ASSERT_TRUE(cache.render(ControlFlow::OnePass, [&](Pass) {
-                const DrawMatrices m = cache.drawMatrices(glm::dmat4(1.0), glm::dmat4(1.0));
-                glUseProgram(program.id());
-                glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "u_mvp"), 1, GL_FALSE, &m.modelViewProj[0][0]);
-                cache.setDrawUniforms(program.id(), m);
-                glBindVertexArray(vao.id());
-                glDrawArrays(GL_TRIANGLE_STRIP, 0, GLsizei(vertices.size()));
-                glBindVertexArray(0);
-                glUseProgram(0);
-            }).ok());
+            ASSERT_TRUE(cache.render(ControlFlow::OnePass, drawStrip).ok());
             cache.endFrame();
         }
         payload = readRGBA(cache.payload(0));
@@ -103,16 +104,7 @@ TEST_F(CacheSkinning, PreviousBoneMatricesReprojectTheSkinnedSurface) {
         // The truth: the same pose rendered with everything missing (fresh labels everywhere).
         cache.invalidate();
         ASSERT_TRUE(cache.beginFrame({.view = camera.view(), .projection = camera.projection(128.0 / 96.0, true)}).ok());
-        ASSERT_TRUE(cache.render(ControlFlow::OnePass, [&](Pass) {
-            const DrawMatrices m = cache.drawMatrices(glm::dmat4(1.0), glm::dmat4(1.0));
-            glUseProgram(program.id());
-            glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "u_mvp"), 1, GL_FALSE, &m.modelViewProj[0][0]);
-            cache.setDrawUniforms(program.id(), m);
-            glBindVertexArray(vao.id());
-            glDrawArrays(GL_TRIANGLE_STRIP, 0, GLsizei(vertices.size()));
-            glBindVertexArray(0);
-            glUseProgram(0);
-        }).ok());
+        ASSERT_TRUE(cache.render(ControlFlow::OnePass, drawStrip).ok());
         const auto truth = readRGBA(cache.payload(0));
         size_t hits = 0, wrong = 0, covered = 0;
         for (size_t i = 0; i < truth.size(); ++i) {

@@ -203,31 +203,23 @@ uint32_t CacheScene::missFragments() const {
     return n;
 }
 
-std::vector<glm::vec4> readRGBA(GLuint texture) {
+namespace {
+
+// The whole of level 0 as `T`s in GL order.
+template <class T>
+std::vector<T> readWhole(GLuint texture, GLenum format, GLenum type) {
     GLint w = 0, h = 0;
     glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
     glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
-    std::vector<glm::vec4> out(static_cast<size_t>(w) * h);
-    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(out.size() * sizeof(glm::vec4)), out.data());
+    std::vector<T> out(static_cast<size_t>(w) * h);
+    glGetTextureImage(texture, 0, format, type, static_cast<GLsizei>(out.size() * sizeof(T)), out.data());
     return out;
 }
 
-std::vector<uint32_t> readUint(GLuint texture) {
-    GLint w = 0, h = 0;
-    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
-    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
-    std::vector<uint32_t> out(static_cast<size_t>(w) * h);
-    glGetTextureImage(texture, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, static_cast<GLsizei>(out.size() * sizeof(uint32_t)), out.data());
-    return out;
-}
+} // namespace
 
-std::vector<float> readDepthTexture(GLuint texture) {
-    GLint w = 0, h = 0;
-    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
-    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
-    std::vector<float> out(static_cast<size_t>(w) * h);
-    glGetTextureImage(texture, 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
-    return out;
-}
+std::vector<glm::vec4> readRGBA(GLuint texture) { return readWhole<glm::vec4>(texture, GL_RGBA, GL_FLOAT); }
+std::vector<uint32_t> readUint(GLuint texture) { return readWhole<uint32_t>(texture, GL_RED_INTEGER, GL_UNSIGNED_INT); }
+std::vector<float> readDepthTexture(GLuint texture) { return readWhole<float>(texture, GL_DEPTH_COMPONENT, GL_FLOAT); }
 
 } // namespace rrc::test
