@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace rrc {
@@ -76,6 +77,7 @@ Result<void> validate(const CacheDesc& d) {
         return bad("depthTolerance must be finite and > 0 (got " + std::to_string(d.depthTolerance) + ")");
     if (!(d.slopeTolerance >= 0.0f) || !std::isfinite(d.slopeTolerance)) return bad("slopeTolerance must be finite and >= 0");
     if (!(d.maxScale >= 0.0f) || !std::isfinite(d.maxScale)) return bad("maxScale must be finite and >= 0");
+    if (!(d.resampleSnap >= 0.0f && d.resampleSnap < 0.5f)) return bad("resampleSnap must be in [0, 0.5)");
     GLint units = 0;
     glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
     if (d.firstTextureUnit < 0 || d.firstTextureUnit + kPayloadUnitOffset + 4 > units)
@@ -173,11 +175,31 @@ std::vector<Define> Cache::defines() const {
                             {"RRC_PAYLOAD_COUNT", std::to_string(d.payloads.size())},
                             {"RRC_DEPTH_UNIT", std::to_string(impl_->unit(kDepthUnitOffset))}};
     static const char* const fetch[] = {"rrc_sampleNearest", "rrc_sampleBilinear", "rrc_sampleBicubic"};
+    const bool snap = d.resampleSnap > 0.0f &&
+                      std::any_of(d.payloads.begin(), d.payloads.end(), [](const PayloadDesc& p) { return p.resample != Resample::Nearest; });
+    if (snap) {
+        // Snapped fetch (CacheDesc::resampleSnap): RRC_TEXEL is the position in texels relative to
+        // texel centres, integral at a centre. Within the snap distance of one on both axes the
+        // texel is fetched exactly: filtering at a position computed as the centre plus float
+        // noise would mix in neighbours by ~1e-5 per frame, which llvmpipe's truncating float16
+        // stores turn into a drift of the whole image (docs/stability.md).
+        char snapDistance[32];
+        std::snprintf(snapDistance, sizeof(snapDistance), "%.9g", static_cast<double>(d.resampleSnap));
+        out.push_back({"RRC_SNAP_TEXELS", snapDistance});
+        out.push_back({"RRC_TEXEL(s, uv)", "((uv) * vec2(textureSize(s, 0)) - 0.5)"});
+        out.push_back({"RRC_SNAPPED(s, uv)",
+                       "all(lessThanEqual(abs(RRC_TEXEL(s, uv) - round(RRC_TEXEL(s, uv))), vec2(RRC_SNAP_TEXELS)))"});
+    }
     for (size_t i = 0; i < d.payloads.size(); ++i) {
         const std::string n = "RRC_PAYLOAD" + std::to_string(i);
         out.push_back({n + "_UNIT", std::to_string(impl_->unit(kPayloadUnitOffset + static_cast<int>(i)))});
         out.push_back({n + "_SAMPLER", isIntegerFormat(d.payloads[i].format) ? "usampler2D" : "sampler2D"});
-        out.push_back({n + "_FETCH", fetch[static_cast<int>(d.payloads[i].resample)]});
+        const char* f = fetch[static_cast<int>(d.payloads[i].resample)];
+        if (snap && d.payloads[i].resample != Resample::Nearest)
+            out.push_back({n + "_FETCH(s, uv)", std::string("(RRC_SNAPPED(s, uv) ? texelFetch(s, ivec2(round(RRC_TEXEL(s, uv))), 0) : ") +
+                                                    f + "(s, uv))"});
+        else
+            out.push_back({n + "_FETCH", f});
         const StoreQuantization q = storeQuantization(d.payloads[i].format);
         out.push_back({n + "_QUANT", std::to_string(q.kind)});
         out.push_back({n + "_BITS", q.bits});

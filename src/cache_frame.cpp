@@ -58,7 +58,7 @@ void Cache::Impl::uploadBlock() {
 Result<void> Cache::beginFrame(const FrameDesc& f) {
     if (!impl_) return noCache("Cache::beginFrame");
     Impl& s = *impl_;
-    if (!finite(f.view) || !finite(f.projection) || glm::determinant(f.view) == 0.0)
+    if (!finite(f.view) || !finite(f.projection) || glm::determinant(f.view) == 0.0 || glm::determinant(f.projection) == 0.0)
         return fail(LogId::CacheNonFinite, "Cache::beginFrame: view or projection matrix is not finite or singular");
     if (!depthRangeOf(f.projection, s.desc.reversedZ))
         return fail(LogId::CacheNonFinite, std::string("Cache::beginFrame: projection is not a finite ") +
@@ -211,6 +211,7 @@ Result<void> Cache::render(ControlFlow flow, const std::function<void(Pass)>& dr
 }
 
 void Cache::setDrawUniforms(GLuint program, const DrawMatrices& m, uint32_t objectId, bool neverCache) const {
+    if (!impl_) { noCache("Cache::setDrawUniforms"); return; }
     if (const GLint l = glGetUniformLocation(program, "rrc_prevMVP"); l >= 0)
         glProgramUniformMatrix4fv(program, l, 1, GL_FALSE, &m.prevModelViewProj[0][0]);
     if (const GLint l = glGetUniformLocation(program, "rrc_objectId"); l >= 0) glProgramUniform1ui(program, l, objectId);

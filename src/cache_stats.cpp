@@ -57,8 +57,19 @@ void Cache::endFrame() {
     s.nextSlot = (s.nextSlot + 1) % static_cast<int>(s.slots.size());
     const uint32_t zero = 0;
     glClearNamedBufferData(slot.counts.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    GLint previousProgram = 0;
+    // The count pass uses texture unit 0 and storage buffer binding 0: the application's
+    // bindings there (and the program) are restored afterwards.
+    GLint previousProgram = 0, activeTexture = 0, previousTexture = 0, previousStorage = 0, previousIndexed = 0;
+    GLint64 previousStart = 0, previousSize = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture);
+    glActiveTexture(GL_TEXTURE0);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previousTexture);
+    glActiveTexture(static_cast<GLenum>(activeTexture));
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &previousStorage);
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &previousIndexed);
+    glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, 0, &previousStart);
+    glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, 0, &previousSize);
     glUseProgram(s.statsProgram.id());
     glBindTextureUnit(0, s.cur().outcomes.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, slot.counts.id());
@@ -66,6 +77,15 @@ void Cache::endFrame() {
     glDispatchCompute(static_cast<GLuint>((s.desc.width + 31) / 32), static_cast<GLuint>((s.desc.height + 31) / 32), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(static_cast<GLuint>(previousProgram));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previousTexture));
+    glActiveTexture(static_cast<GLenum>(activeTexture));
+    if (previousSize > 0)
+        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLuint>(previousIndexed), static_cast<GLintptr>(previousStart),
+                          static_cast<GLsizeiptr>(previousSize));
+    else
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLuint>(previousIndexed));
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(previousStorage));
     slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     slot.frame = s.frame;
     s.collectStats(false);

@@ -44,6 +44,13 @@ struct CacheDesc {
                                   // blend fails the test by itself (chapter section 6.4.4)
     float depthTolerance = 0.01f; // relative tolerance on LINEAR view depth, see docs/cache.md
     float slopeTolerance = 1.0f;  // plus this many times the depth change across one pixel
+    float resampleSnap = 1.0f / 512.0f; // a Bilinear/Bicubic payload fetch whose reprojected
+                                  // position lies within this many texels of a texel centre (both
+                                  // axes) reads that texel exactly: a static view then copies its
+                                  // cache bit for bit instead of drifting through float noise in
+                                  // the reprojection (docs/stability.md). 0: off. Below 0.5.
+                                  // That noise is ~1 float ulp of the texel coordinate (1.2e-4
+                                  // at 1024 texels, 9.8e-4 at 8192): above 8192 use 1/256.
     float maxScale = 0.0f;        // force a miss when the lookup magnifies or minifies by more
                                   // than this factor (0: off, and compiled out of the lookup)
     bool refresh = false;         // lookups honour FrameDesc::refresh; off compiles the refresh
@@ -109,12 +116,13 @@ struct Stats {
 
 // How the implementation rounds a fragment shader's float output when it is stored into a
 // colour format (measured by probeStoreRounding). llvmpipe truncates GL_RGBA16F and
-// GL_R11F_G11F_B10F stores and rounds GL_RGBA8 to nearest; GPUs round to nearest.
+// GL_R11F_G11F_B10F stores, rounds GL_RGBA8 to nearest and stores GL_RGB10_A2 as
+// floor(x * 1024) (Other); GPUs round to nearest.
 enum class StoreRounding {
     Exact,        // 32-bit float and integer formats: nothing to round
     Nearest,      // to the nearest representable value
     TowardZero,   // truncation
-    Other,        // anything else (e.g. toward +infinity)
+    Other,        // anything else, or different in different parts of the range
 };
 std::string_view storeRoundingName(StoreRounding rounding);
 
