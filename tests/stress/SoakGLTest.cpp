@@ -105,7 +105,13 @@ vec4 onHit(rrc_Lookup l, vec4 cached) { return rrc_storeAmortized(rrc_blend(cach
     std::printf("soak: VmRSS %ld KiB after frame 0, %ld KiB at frame 1000, %ld KiB at the end (max after 1000: %ld KiB), "
                 "growth after frame 1000: %ld KiB\n", rssStart, rss1000, rssEnd, rssMax, rssMax - rss1000);
     EXPECT_EQ(nonFinite, 0u);
+#if defined(__SANITIZE_ADDRESS__)
+    // AddressSanitizer holds freed memory in its quarantine (256 MB by default), so resident
+    // memory grows with every allocation for reasons unrelated to rrc: not judged there.
+    std::printf("soak: resident memory not judged under AddressSanitizer (quarantine)\n");
+#else
     EXPECT_LT(rssMax - rss1000, 4 * 1024) << "resident memory grew after the first 1000 frames";
+#endif
 }
 
 } // namespace
