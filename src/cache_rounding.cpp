@@ -107,7 +107,7 @@ Result<StoreRounding> probeStoreRounding(GLenum format) {
     float read[48] = {};
     glGetTextureImage(target.id(), 0, GL_RGBA, GL_FLOAT, sizeof(read), read);
     // Each value read back as a whole number of steps away from its (signed) base value; one
-    // answer only when every base agrees (llvmpipe's GL_RGB10_A2 stores floor(x * 1024), which
+    // answer only when every base agrees (llvmpipe's GL_RGB10_A2 stores about floor(x * 1024), which
     // rounds down low in the range and up high in it: Other).
     int nearest = 0, towardZero = 0;
     for (int b = 0; b < 3; ++b) {

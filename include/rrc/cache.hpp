@@ -116,7 +116,7 @@ struct Stats {
 
 // How the implementation rounds a fragment shader's float output when it is stored into a
 // colour format (measured by probeStoreRounding). llvmpipe truncates GL_RGBA16F and
-// GL_R11F_G11F_B10F stores, rounds GL_RGBA8 to nearest and stores GL_RGB10_A2 as
+// GL_R11F_G11F_B10F stores, rounds GL_RGBA8 to nearest and stores GL_RGB10_A2 about as
 // floor(x * 1024) (Other); GPUs round to nearest.
 enum class StoreRounding {
     Exact,        // 32-bit float and integer formats: nothing to round

@@ -62,7 +62,7 @@ vec4 rrc_roundStochastic(vec4 v, int kind, ivec4 bits, vec4 maxValue, vec4 u) {
     if (kind == 1) {
         // UNORM: k = floor(v * n + u) is exact in float. (k + g) / n with g = 1 / (2 (n + 1))
         // converts back to k under every conversion seen: round(x n), trunc(x n), and
-        // floor(x (n + 1)) (llvmpipe's GL_RGB10_A2), since k + g + k / n < k + 1 for k < n.
+        // about floor(x (n + 1)) (llvmpipe's GL_RGB10_A2), since k + g + k / n < k + 1 for k < n.
         vec4 n = vec4((ivec4(1) << bits) - 1);
         vec4 k = floor(clamp(v, 0.0, 1.0) * n + u);
         r = min((k + 0.5 / (n + 1.0)) / n, vec4(1.0));

@@ -146,15 +146,17 @@ void main() {
 layout(location = 0) out vec4 o_stored;
 layout(location = 1) out vec4 o_exact;
 void main() {
-    // From half denormals (2^-20) past the half range (2^16.5), negative in the bottom rows.
+    // Rows 0-7: from half denormals (2^-20) past the half range (2^16.5), negative in rows 0-3.
+    // Rows 8-23: 1024 values evenly over [0, 1] (every UNORM code range).
     vec2 p = gl_FragCoord.xy;
     float m = exp2(mix(-20.0, 16.5, p.x / 64.0)) * (p.y < 4.0 ? -1.0 : 1.0) * (1.0 + 0.37 * fract(p.y * 0.618));
-    vec4 r = rrc_storeAmortized(vec4(m, m * 0.3, m * 1.7, m * 0.01));
+    if (p.y >= 8.0) m = (floor(p.x) + 64.0 * floor(p.y - 8.0) + 0.37) / 1024.0;
+    vec4 r = rrc_storeAmortized(vec4(m, m * 0.3, min(m * 1.7, 1.0), m * 0.01));
     o_stored = r;
     o_exact = r;
 }
 )";
-    constexpr int W = 64, H = 16;
+    constexpr int W = 64, H = 24;
     for (GLenum format : kAmortizationFormats) {
         Cache cache = Cache::create({.width = W, .height = H, .payloads = {{.format = format}}}).value();
         Program p = program("stress/fill.vert", vertex, "stress/fill.frag", fragment, cache.defines());

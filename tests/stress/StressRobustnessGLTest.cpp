@@ -67,7 +67,7 @@ vec4 onHit(rrc_Lookup l, vec4 cached) {
                 size_t afterInjection = 0;
                 for (int f = 0; f < kFrames; ++f) {
                     scene.params = glm::vec4(f == 0 ? 1.0f : 0.0f, f == 6 ? 1.0f : 0.0f, f == 11 ? 1.0f : 0.0f, 0.0f);
-                    // A camera moving 0.3 px per frame after the first frames: filtered fetches.
+                    // A camera moving 0.044 px per frame: filtered (not snapped) fetches.
                     Camera camera{.eye = {f * 0.01, 0, 0}, .target = {f * 0.01, 0, -1}};
                     ASSERT_TRUE(scene.frame(cache, ControlFlow::TwoPass, camera, objects));
                     const size_t n = nonFinite(readRGBA(cache.payload(0)), 1);
