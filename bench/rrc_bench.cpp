@@ -8,22 +8,39 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+
+namespace {
+std::vector<std::string> splitList(const std::string& list) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start <= list.size()) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        if (comma > start) items.push_back(list.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return items;
+}
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace rrc;
     CLI::App app{"rrc-bench: brute force against the reprojection cache, time against error"};
     bench::Options o;
-    std::string backendOption = "auto", size = "1024x768", demos = "stereo";
+    std::string backendOption = "auto", size = "1024x768", demos = "all";
     app.add_option("--out", o.outDir, "output folder")->default_val("out");
     app.add_option("--backend", backendOption, "auto, egl, osmesa or glfw")->default_val("auto");
     app.add_option("--size", size, "frame size WxH")->default_val("1024x768");
     app.add_option("--frames", o.frames, "measured frames per variant")->check(CLI::Range(1, 100000));
     app.add_option("--warmup", o.warmup, "unmeasured frames first")->check(CLI::Range(0, 1000));
     app.add_option("--scene", o.scene, "glTF scene, or 'procedural'")->default_val("assets/temple.glb");
-    app.add_option("--demos", demos, "comma-separated demos to run")->default_val("stereo");
+    std::string known;
+    for (const auto& d : bench::registeredDemos()) known += (known.empty() ? "" : ", ") + d.name;
+    app.add_option("--demos", demos, "comma-separated demos to run (" + known + "), or all")->default_val("all");
     app.add_option("--eye-separation", o.eyeSeparation, "stereo: distance between the eyes, scene units")->default_val(0.065);
     app.add_option("--flow", o.flow, "cached control flow")->check(CLI::IsMember({"one-pass", "two-pass", "two-pass-no-probe"}))->default_val("two-pass");
     app.add_flag("--smoke", o.smoke, "small and quick: 256x192, few frames (CI)");
@@ -42,20 +59,31 @@ int main(int argc, char** argv) {
     if (ec) { std::fprintf(stderr, "rrc-bench: cannot create %s: %s\n", o.outDir.c_str(), ec.message().c_str()); return 1; }
     auto context = Context::create({.backend = backend.value(), .width = o.width, .height = o.height, .visible = false});
     if (!context) return 1;
-    auto scene = demo::loadDrawScene(o.scene);
-    if (!scene) return 1;
-    std::fprintf(stderr, "rrc-bench: %s, %dx%d, %d frames after %d warm-up, %s on %s\n", scene.value().name.c_str(), o.width,
-                 o.height, o.frames, o.warmup, std::string(backendName(context.value().backend())).c_str(),
-                 context.value().renderer().c_str());
+    std::fprintf(stderr, "rrc-bench: %dx%d, %d frames after %d warm-up, %s on %s\n", o.width, o.height, o.frames, o.warmup,
+                 std::string(backendName(context.value().backend())).c_str(), context.value().renderer().c_str());
     ShaderLibrary library;
     library.add(demo::supportShaders());
     library.add(bench::demoShaders());
     std::vector<bench::Record> records;
-    for (const auto& d : {std::string("stereo")}) {
-        if (demos.find(d) == std::string::npos) continue;
-        auto rows = bench::runStereo(o, scene.value(), library);
-        if (rows.empty()) { std::fprintf(stderr, "rrc-bench: %s failed\n", d.c_str()); return 1; }
+    const std::vector<std::string> wanted = splitList(demos);
+    for (const std::string& name : wanted) {
+        const auto& all = bench::registeredDemos();
+        if (name != "all" && std::none_of(all.begin(), all.end(), [&](const auto& d) { return d.name == name; })) {
+            std::fprintf(stderr, "rrc-bench: --demos: unknown demo '%s' (known: %s)\n", name.c_str(), known.c_str());
+            return 1;
+        }
+    }
+    for (const auto& d : bench::registeredDemos()) {
+        if (std::find(wanted.begin(), wanted.end(), "all") == wanted.end() &&
+            std::find(wanted.begin(), wanted.end(), d.name) == wanted.end())
+            continue;
+        const auto t0 = std::chrono::steady_clock::now();
+        auto rows = d.run(o, library);
+        if (rows.empty()) { std::fprintf(stderr, "rrc-bench: %s failed\n", d.name.c_str()); return 1; }
+        std::fprintf(stderr, "rrc-bench: %s done in %.0f s\n", d.name.c_str(),
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         records.insert(records.end(), rows.begin(), rows.end());
+        bench::writeResults(o, records);   // partial results survive a later failure
     }
     bench::writeResults(o, records);
     std::ofstream meta(o.outDir + "/run.json");

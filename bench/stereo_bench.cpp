@@ -24,9 +24,14 @@ glm::dmat4 pathView(const demo::FlyPath& path, int frame) {
     return glm::lookAt(pose.position, pose.target, pose.up);
 }
 
-} // namespace
+std::vector<Record> runStereo(const Options& options, ShaderLibrary& library);
+const DemoRegistration registration{"stereo", 0, runStereo};
 
-std::vector<Record> runStereo(const Options& options, const BenchScene& scene, ShaderLibrary& library) {
+std::vector<Record> runStereo(const Options& options, ShaderLibrary& library) {
+    const auto loaded = loadBenchScene(options.scene);
+    if (!loaded) return {};
+    const BenchScene& scene = *loaded;
+    std::fprintf(stderr, "stereo: scene %s\n", scene.name.c_str());
     stereo::StereoRenderer renderer;
     if (auto r = renderer.init(options.width, options.height, library); !r) return {};
     renderer.setFlow(options.flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass, options.flow == "two-pass");
@@ -126,4 +131,5 @@ std::vector<Record> runStereo(const Options& options, const BenchScene& scene, S
     return records;
 }
 
+} // namespace
 } // namespace rrc::bench
