@@ -53,6 +53,19 @@ def plot(demo, rows, out_dir):
     return path.name
 
 
+def demo_extras(demo, rows, out_dir):
+    """A demo's own report section: scripts/report/<demo>.py, when it exists, defines
+    extra(rows, out_dir) -> list of markdown lines (extra plots, equal-time tables ...)."""
+    path = pathlib.Path(__file__).resolve().parent / "report" / f"{demo}.py"
+    if not path.exists():
+        return []
+    import importlib.util
+    spec = importlib.util.spec_from_file_location(f"report_{demo}", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return list(module.extra(rows, out_dir))
+
+
 def main():
     out_dir = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "out")
     data = json.loads((out_dir / "results.json").read_text())
@@ -91,6 +104,7 @@ def main():
         name = plot(demo, rows, out_dir)
         if name:
             lines += [f"![{demo}: time against error]({name})", ""]
+        lines += demo_extras(demo, rows, out_dir)
         for r in rows:
             images = r.get("images") or {}
             if images:
