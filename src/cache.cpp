@@ -116,6 +116,12 @@ Result<void> Cache::Impl::createTargets() {
         glNamedFramebufferTexture(t.framebuffer.id(), GL_DEPTH_STENCIL_ATTACHMENT, t.depth.id(), 0);
         glNamedFramebufferDrawBuffers(t.framebuffer.id(), static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
         if (auto r = checkFramebuffer(t.framebuffer, "rrc::Cache target"); !r) return r;
+        if (desc.stats) {
+            t.stencilOnly = createFramebuffer();
+            glNamedFramebufferTexture(t.stencilOnly.id(), GL_DEPTH_STENCIL_ATTACHMENT, t.depth.id(), 0);
+            glNamedFramebufferDrawBuffer(t.stencilOnly.id(), GL_NONE);
+            if (auto r = checkFramebuffer(t.stencilOnly, "rrc::Cache stencil target"); !r) return r;
+        }
     }
     invalidated = true;
     return {};

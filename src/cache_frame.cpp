@@ -129,6 +129,42 @@ void Cache::Impl::clearCurrent() {
     glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, desc.reversedZ ? 0.0f : 1.0f, 0);
 }
 
+Result<void> Cache::Impl::markMisses(bool probe) {
+    if (!markProgram) {
+        auto p = internalProgram("rrc/internal/fullscreen.vert", "rrc/internal/mark_misses.frag", nullptr);
+        if (!p) return p.error();
+        markProgram = std::move(p).value();
+    }
+    // Texture unit 0 and the program are the application's: restored afterwards.
+    GLint previousProgram = 0, activeTexture = 0, previousTexture = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture);
+    glActiveTexture(GL_TEXTURE0);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previousTexture);
+    glActiveTexture(static_cast<GLenum>(activeTexture));
+
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cur().stencilOnly.id());
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glUseProgram(markProgram.id());
+    glBindTextureUnit(0, cur().outcomes.id());
+    glBindVertexArray(emptyVao.id());
+    if (probe) glBeginQuery(GL_ANY_SAMPLES_PASSED, this->probe.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (probe) glEndQuery(GL_ANY_SAMPLES_PASSED);
+    glBindVertexArray(0);
+    glBindTextureUnit(0, static_cast<GLuint>(previousTexture));
+    glUseProgram(static_cast<GLuint>(previousProgram));
+
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cur().framebuffer.id());
+    glEnable(GL_DEPTH_TEST);
+    glStencilFunc(GL_EQUAL, 2, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    return {};
+}
+
 Result<void> Cache::render(ControlFlow flow, const std::function<void(Pass)>& draw) {
     if (!impl_) return noCache("Cache::render");
     Impl& s = *impl_;
@@ -162,15 +198,36 @@ Result<void> Cache::render(ControlFlow flow, const std::function<void(Pass)>& dr
     const bool haveCache = s.previousValid();
     // After a prepass every later pass shades only the nearest surface, once (GL_EQUAL).
     const bool prepass = flow == ControlFlow::OnePass || s.frameDesc.depthPrepass;
+    // With an outcome target the lookup pass writes no stencil: a shader that discards and
+    // writes stencil is depth-tested late, i.e. after running on every hidden fragment too (on
+    // the temple scene that made the lookup pass cost 2.7x as much). The prepass marks covered
+    // pixels instead, and markMisses() turns the outcome target into the miss pass's stencil.
+    const bool markByOutcome = prepass && haveCache && flow != ControlFlow::OnePass && s.desc.stats;
+    if (markByOutcome) {
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 1, 0xff);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    }
     if (prepass) pass(Pass::DepthPrepass, strict, true, false);
+    if (markByOutcome) glDisable(GL_STENCIL_TEST);
     const GLenum shadeTest = prepass ? GL_EQUAL : strict;
     if (flow == ControlFlow::OnePass) {
         pass(Pass::Shade, shadeTest, !prepass, true);
     } else if (!haveCache) {
         // Everything misses (first frame, cut, resize): no lookup, no probe, just the misses.
         pass(Pass::Miss, shadeTest, !prepass, true);
+    } else if (markByOutcome) {
+        pass(Pass::Lookup, shadeTest, false, true);
+        if (auto r = s.markMisses(s.frameDesc.skipEmptyMissPass); !r) return r;
+        if (s.frameDesc.skipEmptyMissPass) glBeginConditionalRender(s.probe.id(), GL_QUERY_WAIT);
+        pass(Pass::Miss, shadeTest, false, true);
+        if (s.frameDesc.skipEmptyMissPass) glEndConditionalRender();
+        glDisable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 0, 0xff);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     } else {
-        // With a prepass, hits mark the stencil and the miss pass takes the unmarked pixels.
+        // Without an outcome target (stats off), hits mark the stencil (so the lookup pass is
+        // depth-tested late) and the miss pass takes the unmarked pixels.
         // Without one, the miss pass relies on the depth the hits wrote: a strict test passes
         // only where the nearest surface was discarded.
         if (prepass) {

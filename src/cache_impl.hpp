@@ -15,6 +15,7 @@ struct CacheTargets {
     std::vector<Texture> payloads;
     Texture depth, ids, age, outcomes;
     Framebuffer framebuffer;
+    Framebuffer stencilOnly;  // the depth-stencil attachment alone: the miss-marking pass
     bool rendered = false;   // holds a complete render usable as a cache
 };
 
@@ -51,7 +52,7 @@ struct Cache::Impl {
     std::array<StatsSlot, 3> slots;
     int nextSlot = 0;
     Stats latest;
-    Program statsProgram, visualizeProgram;
+    Program statsProgram, visualizeProgram, markProgram;
 
     CacheTargets& cur() { return targets[current]; }
     const CacheTargets& cur() const { return targets[current]; }
@@ -63,9 +64,14 @@ struct Cache::Impl {
     void uploadBlock();
     void clearCurrent();
     void collectStats(bool wait);
+    // Two-pass flow with an outcome target: stencil 1 -> 2 where the lookup did not hit, counted
+    // by the probe query when `probe`. Leaves the cache framebuffer bound.
+    Result<void> markMisses(bool probe);
     ~Impl();
 };
 
 bool isIntegerFormat(GLenum format);
+// A program from the library's own snippets (rrc/internal/...); null names are left out.
+Result<Program> internalProgram(const char* vertex, const char* fragment, const char* compute);
 
 } // namespace rrc

@@ -3,13 +3,14 @@
 #include "cache_impl.hpp"
 
 namespace rrc {
-namespace {
 
 Result<Program> internalProgram(const char* vertex, const char* fragment, const char* compute) {
     ShaderLibrary library;
     return buildProgram({.vertex = vertex ? vertex : "", .fragment = fragment ? fragment : "",
                          .compute = compute ? compute : ""}, library);
 }
+
+namespace {
 
 void accumulate(Stats& s, const uint32_t counts[8]) {
     for (int i = 0; i < 8; ++i) s.counts[i] = counts[i];

@@ -26,9 +26,11 @@ protected:
 };
 
 TEST_F(CacheFlow, OneTwoAndThreePassFlowsRenderIdenticalImages) {
-    Cache one = make(), two = make(), three = make(), noPrepass = make();
-    CacheScene s1(one), s2(two), s3(three), s4(noPrepass);
-    std::vector<std::vector<glm::vec4>> images[4];
+    // `two` marks misses from its outcome target; `noStats` (no outcome target) by the stencil
+    // its lookup pass writes, with the probe drawn by the application.
+    Cache one = make(), two = make(), three = make(), noPrepass = make(), noStats = make({.stats = false});
+    CacheScene s1(one), s2(two), s3(three), s4(noPrepass), s5(noStats);
+    std::vector<std::vector<glm::vec4>> images[5];
     for (int f = 0; f < 5; ++f) {
         const glm::dmat4 box = quadAt({-1.0 + 0.37 * f, 0.2 - 0.11 * f, -4}, {0.9, 0.7});
         const glm::dmat4 prevBox = quadAt({-1.0 + 0.37 * (f - 1), 0.2 - 0.11 * (f - 1), -4}, {0.9, 0.7});
@@ -38,6 +40,8 @@ TEST_F(CacheFlow, OneTwoAndThreePassFlowsRenderIdenticalImages) {
         ASSERT_TRUE(s2.frame(two, ControlFlow::TwoPass, camera, objects));
         ASSERT_TRUE(s3.frame(three, ControlFlow::ThreePass, camera, objects));
         ASSERT_TRUE(s4.frame(noPrepass, ControlFlow::TwoPass, camera, objects, {.depthPrepass = false}));
+        ASSERT_TRUE(s5.frame(noStats, ControlFlow::TwoPass, camera, objects));
+        images[4].push_back(readRGBA(noStats.payload(0)));
         images[3].push_back(readRGBA(noPrepass.payload(0)));
         images[0].push_back(readRGBA(one.payload(0)));
         images[1].push_back(readRGBA(two.payload(0)));
@@ -45,12 +49,15 @@ TEST_F(CacheFlow, OneTwoAndThreePassFlowsRenderIdenticalImages) {
         EXPECT_EQ(readUint(one.outcomes()), readUint(two.outcomes())) << "frame " << f;
     }
     EXPECT_EQ(s1.passes, (std::vector<Pass>{Pass::DepthPrepass, Pass::Shade}));
-    EXPECT_EQ(s3.passes, (std::vector<Pass>{Pass::DepthPrepass, Pass::Lookup, Pass::Probe, Pass::Miss, Pass::Resolve}));
+    EXPECT_EQ(s2.passes, (std::vector<Pass>{Pass::DepthPrepass, Pass::Lookup, Pass::Miss}));
+    EXPECT_EQ(s3.passes, (std::vector<Pass>{Pass::DepthPrepass, Pass::Lookup, Pass::Miss, Pass::Resolve}));
     EXPECT_EQ(s4.passes, (std::vector<Pass>{Pass::Lookup, Pass::Probe, Pass::Miss}));
+    EXPECT_EQ(s5.passes, (std::vector<Pass>{Pass::DepthPrepass, Pass::Lookup, Pass::Probe, Pass::Miss}));
     for (int f = 0; f < 5; ++f) {
         EXPECT_EQ(images[0][f], images[1][f]) << "one-pass vs two-pass, frame " << f;
         EXPECT_EQ(images[1][f], images[2][f]) << "two-pass vs three-pass, frame " << f;
         EXPECT_EQ(images[1][f], images[3][f]) << "two-pass with vs without prepass, frame " << f;
+        EXPECT_EQ(images[1][f], images[4][f]) << "two-pass marked by outcome vs by stencil, frame " << f;
     }
 }
 

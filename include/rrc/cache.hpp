@@ -82,7 +82,10 @@ enum class ControlFlow {
     OnePass,    // depth prepass, then one shading pass branching between hit and miss (fig. 6.5a)
     TwoPass,    // lookup pass shades hits and discards misses; the miss pass runs only on the
                 // pixels left (fig. 6.5b, by stencil after a depth prepass, else by the depth
-                // test); skipped entirely when nothing missed
+                // test); skipped entirely when nothing missed. With the outcome target
+                // (CacheDesc::stats) the stencil comes from it through a full-screen pass, so the
+                // lookup pass keeps early depth testing: hits must call rrc_writeCache (a hit the
+                // outcome target does not record is shaded again by the miss pass)
     ThreePass,  // as TwoPass writing payloads only, then a full-screen pass shades from them
 };
 
@@ -90,7 +93,8 @@ enum class Pass {
     DepthPrepass,  // depth only (colour writes are masked)
     Shade,         // OnePass: lookup and branch
     Lookup,        // Two/ThreePass: lookup; hit -> write, miss -> discard
-    Probe,         // Two/ThreePass: depth only, counts pixels left for the miss pass
+    Probe,         // Two/ThreePass without the outcome target (CacheDesc::stats off): depth
+                   // only, counts pixels left for the miss pass (with it, the library counts them)
     Miss,          // Two/ThreePass: the full computation
     Resolve,       // ThreePass: full-screen pass from the payloads (bind them with bindPayloads)
 };
