@@ -13,12 +13,12 @@
 
 namespace rrc::test {
 
-class StressScene {
+class StressScene : public QuadScene {
 public:
     StressScene(const Cache& cache, const std::string& body, std::vector<Define> extra = {});
 
     // beginFrame + render + endFrame with `view` and `projection` (FrameDesc's own are replaced).
-    // Returns false when beginFrame or render failed.
+    // Returns false when beginFrame failed.
     bool frame(Cache& cache, ControlFlow flow, const glm::dmat4& view, const glm::dmat4& projection,
                std::span<const Object> objects, FrameDesc frameDesc = {});
     // The same with a Camera (its projection for the cache's aspect and depth convention).
@@ -26,17 +26,9 @@ public:
                FrameDesc frameDesc = {});
 
     glm::vec4 params{0.0f}, params2{0.0f};
-    std::vector<Pass> passes;   // passes of the last frame, in order
-    Texture resolved;           // ThreePass: the resolve output (RGBA32F, the cache's size)
 
 private:
-    ShaderLibrary library_;
-    Program lookup_, miss_, shade_, depthOnly_, resolve_;
-    Buffer vertices_;
-    VertexArray vao_, emptyVao_;
-    Framebuffer resolveFramebuffer_;
-    int resolveWidth_ = 0, resolveHeight_ = 0;
-    void drawObjects(const Cache& cache, GLuint program, std::span<const Object> objects, uint32_t frame) const;
+    void setFrameUniforms(GLuint program, uint32_t frame) const override;
 };
 
 // Reads VmRSS from /proc/self/status, in KiB (0 when unavailable).

@@ -13,10 +13,12 @@ layout(location = 0) in vec2 a_corner;
 uniform mat4 u_mvp;
 uniform mat4 u_model;
 out vec3 v_world;
+out vec2 v_local;
 void main() {
     vec4 local = vec4(a_corner, 0.0, 1.0);
     gl_Position = u_mvp * local;
     v_world = (u_model * local).xyz;
+    v_local = a_corner;
     rrc_reproject(local);
 }
 )";
@@ -110,15 +112,14 @@ glm::dmat4 quadAt(glm::dvec3 center, glm::dvec2 halfSize) {
     return glm::scale(glm::translate(glm::dmat4(1.0), center), glm::dvec3(halfSize, 1.0));
 }
 
-CacheScene::CacheScene(const Cache& cache, Shading shading, std::vector<Define> extra) {
+QuadScene::QuadScene(const Cache& cache, const std::string& fragment, std::vector<Define> defines) {
     library_.add("test/scene.vert", kVertex);
-    library_.add("test/scene.frag", kFragment);
+    library_.add("test/scene.frag", fragment);
     library_.add("test/depth.frag", kDepthOnly);
     library_.add("test/resolve.vert", kResolveVertex);
     library_.add("test/resolve.frag", kResolveFragment);
-    std::vector<Define> defines = cache.defines();
-    defines.push_back({"SHADING", shading == Shading::WorldPosition ? "0" : "1"});
-    defines.insert(defines.end(), extra.begin(), extra.end());
+    const std::vector<Define> cacheDefines = cache.defines();
+    defines.insert(defines.begin(), cacheDefines.begin(), cacheDefines.end());
     auto with = [&](const char* pass) { auto d = defines; d.push_back({pass}); return d; };
     lookup_ = build(library_, "test/scene.vert", "test/scene.frag", with("PASS_LOOKUP"));
     miss_ = build(library_, "test/scene.vert", "test/scene.frag", with("PASS_MISS"));
@@ -134,20 +135,17 @@ CacheScene::CacheScene(const Cache& cache, Shading shading, std::vector<Define> 
     glVertexArrayAttribFormat(vao_.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(vao_.id(), 0, 0);
     emptyVao_ = createVertexArray();
-    counter_ = createBuffer();
-    glNamedBufferStorage(counter_.id(), sizeof(uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
-void CacheScene::drawObjects(const Cache& cache, GLuint program, std::span<const Object> objects, uint32_t frame) const {
+void QuadScene::drawObjects(const Cache& cache, GLuint program, std::span<const Object> objects, uint32_t frame) const {
     glUseProgram(program);
     glBindVertexArray(vao_.id());
-    setUint(program, "u_frame", frame);
-    if (const GLint l = glGetUniformLocation(program, "u_sampleOffset"); l >= 0) glProgramUniform1f(program, l, sampleOffset);
+    setFrameUniforms(program, frame);
     for (const Object& o : objects) {
         const DrawMatrices m = cache.drawMatrices(o.model, o.prevModel);
         setMatrix(program, "u_mvp", m.modelViewProj);
         setMatrix(program, "u_model", glm::mat4(o.model));
-        setUint(program, "u_forceMiss", o.forceMiss ? 1u : 0u);
+        setObjectUniforms(program, o);
         cache.setDrawUniforms(program, m, o.id, o.neverCache);
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     }
@@ -155,22 +153,18 @@ void CacheScene::drawObjects(const Cache& cache, GLuint program, std::span<const
     glUseProgram(0);
 }
 
-bool CacheScene::frame(Cache& cache, ControlFlow flow, const Camera& camera, std::span<const Object> objects,
-                       FrameDesc f) {
-    const double aspect = static_cast<double>(cache.width()) / cache.height();
-    f.view = camera.view();
-    f.projection = camera.projection(aspect, cache.desc().reversedZ);
+bool QuadScene::renderFrame(Cache& cache, ControlFlow flow, std::span<const Object> objects, const FrameDesc& f) {
     if (!cache.beginFrame(f).ok()) return false;
-    const uint32_t zero = 0;
-    glClearNamedBufferData(counter_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, counter_.id());
+    beforeRender();
     passes.clear();
-    if (flow == ControlFlow::ThreePass && (!resolved || cache.width() != resolveWidth_)) {
+    if (flow == ControlFlow::ThreePass &&
+        (!resolved || cache.width() != resolveWidth_ || cache.height() != resolveHeight_)) {
         resolved = createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(resolved.id(), 1, GL_RGBA32F, cache.width(), cache.height());
         resolveFramebuffer_ = createFramebuffer();
         glNamedFramebufferTexture(resolveFramebuffer_.id(), GL_COLOR_ATTACHMENT0, resolved.id(), 0);
         resolveWidth_ = cache.width();
+        resolveHeight_ = cache.height();
     }
     if (flow == ControlFlow::ThreePass) glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFramebuffer_.id());
     const auto frameIndex = static_cast<uint32_t>(cache.frame());
@@ -195,6 +189,39 @@ bool CacheScene::frame(Cache& cache, ControlFlow flow, const Camera& camera, std
     EXPECT_TRUE(r.ok());
     cache.endFrame();
     return r.ok();
+}
+
+CacheScene::CacheScene(const Cache& cache, Shading shading, std::vector<Define> extra)
+    : QuadScene(cache, kFragment, [&] {
+          std::vector<Define> d{{"SHADING", shading == Shading::WorldPosition ? "0" : "1"}};
+          d.insert(d.end(), extra.begin(), extra.end());
+          return d;
+      }()) {
+    counter_ = createBuffer();
+    glNamedBufferStorage(counter_.id(), sizeof(uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+void CacheScene::setFrameUniforms(GLuint program, uint32_t frame) const {
+    setUint(program, "u_frame", frame);
+    if (const GLint l = glGetUniformLocation(program, "u_sampleOffset"); l >= 0) glProgramUniform1f(program, l, sampleOffset);
+}
+
+void CacheScene::setObjectUniforms(GLuint program, const Object& o) const {
+    setUint(program, "u_forceMiss", o.forceMiss ? 1u : 0u);
+}
+
+void CacheScene::beforeRender() {
+    const uint32_t zero = 0;
+    glClearNamedBufferData(counter_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, counter_.id());
+}
+
+bool CacheScene::frame(Cache& cache, ControlFlow flow, const Camera& camera, std::span<const Object> objects,
+                       FrameDesc f) {
+    const double aspect = static_cast<double>(cache.width()) / cache.height();
+    f.view = camera.view();
+    f.projection = camera.projection(aspect, cache.desc().reversedZ);
+    return renderFrame(cache, flow, objects, f);
 }
 
 uint32_t CacheScene::missFragments() const {

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <span>
+#include <string>
 #include <vector>
 
 namespace rrc::test {
@@ -38,7 +39,38 @@ enum class Shading {
     Amortized,       // every pixel: fresh noise sample blended into the cached one (rrc_blend)
 };
 
-class CacheScene {
+// What the test scenes share: unit quads (`a_corner` in [-1, 1]^2; the vertex shader outputs
+// v_world and v_local) drawn with one program per pass of each flow from one fragment source
+// (PASS_LOOKUP / PASS_MISS / neither), a depth-only program, the ThreePass resolve, and the
+// frame loop. Subclasses supply the fragment source and their uniforms.
+class QuadScene {
+public:
+    virtual ~QuadScene() = default;
+    std::vector<Pass> passes;   // passes of the last frame, in order
+    Texture resolved;           // ThreePass: the resolve output (RGBA32F, the cache's size)
+
+protected:
+    QuadScene(const Cache& cache, const std::string& fragment, std::vector<Define> defines);
+    // beginFrame (with `f`, whose view and projection the caller set) + render + endFrame.
+    // Returns false when beginFrame failed (a failed render also fails the test).
+    bool renderFrame(Cache& cache, ControlFlow flow, std::span<const Object> objects, const FrameDesc& f);
+    virtual void setFrameUniforms(GLuint /*program*/, uint32_t /*frame*/) const {}
+    virtual void setObjectUniforms(GLuint /*program*/, const Object& /*object*/) const {}
+    virtual void beforeRender() {}
+
+private:
+    ShaderLibrary library_;
+    Program lookup_, miss_, shade_, depthOnly_, resolve_;
+    Buffer vertices_;
+    VertexArray vao_, emptyVao_;
+    Framebuffer resolveFramebuffer_;
+    int resolveWidth_ = 0, resolveHeight_ = 0;
+    void drawObjects(const Cache& cache, GLuint program, std::span<const Object> objects, uint32_t frame) const;
+};
+
+// Payload: the world position of the surface point (linear over a quad, so bilinear resampling
+// of it is exact away from edges), or amortized noise.
+class CacheScene : public QuadScene {
 public:
     CacheScene(const Cache& cache, Shading shading = Shading::WorldPosition, std::vector<Define> extra = {});
 
@@ -46,23 +78,16 @@ public:
     bool frame(Cache& cache, ControlFlow flow, const Camera& camera, std::span<const Object> objects,
                FrameDesc frameDesc = {});
 
-    // Which passes ran in the last frame, in order.
-    std::vector<Pass> passes;
-    // The ThreePass resolve output (RGBA32F of the cache's size).
-    Texture resolved;
     // Fragments the miss program ran for (atomic counter in the shader), reset every frame.
     uint32_t missFragments() const;
     // A fresh-sample value added to every pixel's noise (NaN/Inf injection tests).
     float sampleOffset = 0.0f;
 
 private:
-    ShaderLibrary library_;
-    Program lookup_, miss_, shade_, depthOnly_, resolve_;
-    Buffer vertices_, counter_;
-    VertexArray vao_, emptyVao_;
-    Framebuffer resolveFramebuffer_;
-    int resolveWidth_ = 0;
-    void drawObjects(const Cache& cache, GLuint program, std::span<const Object> objects, uint32_t frame) const;
+    Buffer counter_;
+    void setFrameUniforms(GLuint program, uint32_t frame) const override;
+    void setObjectUniforms(GLuint program, const Object& object) const override;
+    void beforeRender() override;
 };
 
 // Whole-texture readbacks in GL order (row 0 at the bottom).
