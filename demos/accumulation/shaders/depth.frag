@@ -1,0 +1,3 @@
+#version 450 core
+// Depth prepass / probe: no colour.
+void main() {}
