@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 
 namespace rrc::bench {
@@ -30,6 +31,7 @@ struct Run {
     float lambda;       // < 0: not amortized
     int renderer;       // which ShadowRenderer (each amortized lambda needs its own cache)
     Tally tally;
+    bool blur = false;  // fig. 6.9e's depth-aware blur, fed back into the cache
 };
 
 // The camera holds still at A, jumps to B (one second further along the path) and holds still
@@ -46,9 +48,12 @@ void runConvergence(const Options& options, std::vector<std::unique_ptr<ShadowRe
                            .prevCaster = caster, .frame = frameNumber++};
     };
     const glm::dmat4 a = viewAt(6.0), b = viewAt(7.0);
-    const int settle = 10, after = options.smoke ? 8 : 20;
+    const int settle = options.smoke ? 3 : 6, after = options.smoke ? 5 : 12;
+    // A clean start: what the moving sequence left in the caches (the caster's old shadows)
+    // would otherwise fade during the measurement and blur what it shows.
+    for (auto& r : renderers) r->cache().invalidate();
     for (int f = 0; f < settle; ++f)
-        for (size_t i = 0; i < renderers.size(); ++i) renderers[i]->render(Variant::Amortized, {.lambda = sweep[i]}, frame(a));
+        for (size_t i = 0; i < 4; ++i) renderers[i]->render(Variant::Amortized, {.lambda = sweep[i]}, frame(a));
     renderers[0]->render(Variant::Pcf, {.taps = 256}, frame(b));
     const Pixels reference = readRgba8(renderers[0]->color(Variant::Pcf), w, h);
     std::map<std::string, std::vector<double>> series;
@@ -62,7 +67,7 @@ void runConvergence(const Options& options, std::vector<std::unique_ptr<ShadowRe
         series["pcf" + std::to_string(taps)] = std::vector<double>(after, std::sqrt(e2));
     }
     for (int f = 0; f < after; ++f)
-        for (size_t i = 0; i < renderers.size(); ++i) {
+        for (size_t i = 0; i < 4; ++i) {
             renderers[i]->render(Variant::Amortized, {.lambda = sweep[i]}, frame(b));
             char name[32];
             std::snprintf(name, sizeof name, "amortized_l%.2f", sweep[i]);
@@ -71,10 +76,13 @@ void runConvergence(const Options& options, std::vector<std::unique_ptr<ShadowRe
     writeSeries(options, "shadows_convergence.json", series);
     // Fig. 6.9 (e): blur + smoothstep remap, (f): threshold, both on the converged cache at B.
     Record& amortized = *std::find_if(records.begin(), records.end(), [](const Record& r) { return r.variant == "amortized"; });
-    for (auto [remap, label, file] : {std::tuple{Remap::None, "blurred (depth-aware)", "shadows_amortized_blur.png"},
-                                      std::tuple{Remap::Smoothstep, "blurred + smoothstep (fig. 6.9e)", "shadows_amortized_smoothstep.png"},
-                                      std::tuple{Remap::Threshold, "blurred + threshold (fig. 6.9f)", "shadows_amortized_threshold.png"}}) {
-        for (int f = 0; f < 6; ++f) renderers[0]->render(Variant::Amortized, {.lambda = 0.6f, .blur = true, .remap = remap}, frame(b));
+    const std::tuple<Remap, const char*, const char*> figure69[] = {
+        {Remap::None, "blurred (depth-aware)", "shadows_amortized_blur.png"},
+        {Remap::Smoothstep, "blurred + smoothstep (fig. 6.9e)", "shadows_amortized_smoothstep.png"},
+        {Remap::Threshold, "blurred + threshold (fig. 6.9f)", "shadows_amortized_threshold.png"}};
+    for (auto [remap, label, file] : figure69) {
+        if (options.smoke) break;   // CI's preset: the images are not worth its time
+        for (int f = 0; f < 4; ++f) renderers[0]->render(Variant::Amortized, {.lambda = 0.6f, .blur = true, .remap = remap}, frame(b));
         amortized.images[label] = savePng(options, renderers[0]->color(Variant::Amortized), file);
         if (remap == Remap::None)
             amortized.extra["rmse_blurred_static"] = rmse(readRgba8(renderers[0]->color(Variant::Amortized), w, h), reference);
@@ -82,6 +90,27 @@ void runConvergence(const Options& options, std::vector<std::unique_ptr<ShadowRe
     amortized.extra["rmse_converged_static"] = series["amortized_l0.60"].back();
     amortized.extra["rmse_pcf4_static"] = series["pcf4"].front();
     amortized.extra["rmse_pcf16_static"] = series["pcf16"].front();
+}
+
+// The control flows of docs/shadows.md side by side (a few interleaved frames of the sequence):
+// PCF 4 without / with depth prepass, amortized single-pass / OnePass / TwoPass.
+void compareFlows(const Options& options, ShadowRenderer& renderer, const std::function<ShadowFrame(int)>& frameAt, Record& amortized) {
+    struct Case { const char* key; Variant variant; Flow flow; Tally tally; };
+    Case cases[] = {{"ms_pcf4_no_prepass", Variant::Pcf, Flow::SinglePass, {}}, {"ms_pcf4_prepass", Variant::Pcf, Flow::OnePass, {}},
+                    {"ms_flow_single_pass", Variant::Amortized, Flow::SinglePass, {}},
+                    {"ms_flow_one_pass", Variant::Amortized, Flow::OnePass, {}},
+                    {"ms_flow_two_pass", Variant::Amortized, Flow::TwoPass, {}}};
+    const int frames = options.smoke ? 2 : 6;
+    for (int f = -2; f < frames; ++f)
+        for (Case& c : cases) {
+            const ShadowFrame frame = frameAt(1000 + f);
+            const double ms = timeOnce([&] {
+                renderer.invalidateShadowMap();
+                renderer.render(c.variant, {.taps = 4, .flow = c.flow}, frame);
+            });
+            if (f >= 0) c.tally.ms.push_back(ms);
+        }
+    for (Case& c : cases) amortized.extra[c.key] = c.tally.timing().median;
 }
 
 std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
@@ -92,11 +121,16 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
     const int w = options.width, h = options.height;
     const float sweep[] = {0.6f, 0.4f, 0.75f, 0.9f};   // renderer i amortizes with sweep[i]
     std::vector<std::unique_ptr<ShadowRenderer>> renderers;
-    for (int i = 0; i < 4; ++i) {
+    // 0-3: the lambdas of `sweep`, with the chapter's plain recursive filter, no stats target and
+    // nearest resampling (each saves a fetch or a write per pixel: docs/shadows.md); 4: amortized
+    // + blur, with the age and stats targets and bilinear resampling,
+    // which also gives the hit rate (every variant follows the same camera path).
+    for (int i = 0; i < 5; ++i) {
         renderers.push_back(std::make_unique<ShadowRenderer>());
-        if (auto r = renderers.back()->init(w, h, library, scene.draws, scene.boundsMin, scene.boundsMax); !r) return {};
+        const CacheFeatures features{.age = i == 4, .stats = i == 4, .bilinear = i == 4};
+        if (auto r = renderers.back()->init(w, h, library, scene.draws, scene.boundsMin, scene.boundsMax, 2048, features); !r) return {};
     }
-    std::vector<Run> runs = {{"pcf", 4, -1, 0, {}}, {"pcf", 16, -1, 0, {}}, {"amortized", 4, 0.6f, 0, {}},
+    std::vector<Run> runs = {{"pcf", 4, -1, 0, {}}, {"pcf", 16, -1, 0, {}}, {"amortized", 4, 0.6f, 0, {}}, {"amortized + blur", 4, 0.6f, 4, {}, true},
                              {"amortized (lambda sweep)", 4, 0.4f, 1, {}}, {"amortized (lambda sweep)", 4, 0.75f, 2, {}},
                              {"amortized (lambda sweep)", 4, 0.9f, 3, {}}};
     const glm::dmat4 projection = demo::perspective(0.9, double(w) / h, 0.1);
@@ -110,16 +144,19 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
     auto render = [&](const Run& run, const ShadowFrame& frame) {
         renderers[run.renderer]->invalidateShadowMap();   // the caster moved: every variant re-renders it
         renderers[run.renderer]->render(run.lambda < 0 ? Variant::Pcf : Variant::Amortized,
-                                        {.taps = run.taps, .lambda = std::max(run.lambda, 0.0f), .seed = 1}, frame);
+                                        {.taps = run.taps, .lambda = std::max(run.lambda, 0.0f), .blur = run.blur, .seed = 1}, frame);
     };
     const Run reference{"reference", 256, -1, 0, {}};
-    const int checkEvery = std::max(1, options.frames / 8);
+    // Half the common frame count: 6-8 variants per frame and the sweeps must fit the demos'
+    // share of scripts/demo's time; the reference (256 samples) on every 5th frame.
+    const int frames = std::max(2, options.frames / 2);
+    const int checkEvery = std::max(1, std::min(5, frames / 3));
     Tally referenceTally;
     double hits = 0, lookups = 0;
-    std::fprintf(stderr, "shadows: %d frames x %zu variants, interleaved; reference every %d frames (load %s)\n", options.frames,
+    std::fprintf(stderr, "shadows: %d frames x %zu variants, interleaved; reference every %d frames (load %s)\n", frames,
                  runs.size(), checkEvery, loadAverage().c_str());
     Pixels referencePixels;
-    for (int f = -options.warmup; f < options.frames; ++f) {
+    for (int f = -options.warmup; f < frames; ++f) {
         const double t = t0 + (f + options.warmup) / 60.0;
         const ShadowFrame frame = frameAt(f + options.warmup, t, viewAt(t));
         const bool check = f >= 0 && f % checkEvery == 0;
@@ -133,7 +170,7 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
             run.tally.ms.push_back(ms);
             ShadowRenderer& r = *renderers[run.renderer];
             if (check) run.tally.addError(rmse(readRgba8(r.color(run.lambda < 0 ? Variant::Pcf : Variant::Amortized), w, h), referencePixels));
-            if (check && run.lambda == 0.6f) {
+            if (check && run.renderer == 4) {
                 const Stats s = r.cache().finishStats();
                 hits += double(s.hits);
                 lookups += double(s.hits + s.misses + s.forced + s.refreshed);
@@ -142,7 +179,7 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
     }
     // Sample frames: the last frame of the sequence, every variant and the reference.
     std::vector<Record> records;
-    const int last = options.frames + options.warmup - 1;
+    const int last = frames + options.warmup - 1;
     const double tLast = t0 + last / 60.0;
     const ShadowFrame lastFrame = frameAt(last, tLast, viewAt(tLast));
     render(reference, lastFrame);
@@ -153,14 +190,14 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
     ref.psnr = INFINITY;
     ref.images["256-tap PCF"] = savePng(options, renderers[0]->color(Variant::Pcf), "shadows_reference.png");
     for (Run& run : runs) {
-        Record r{.demo = "shadows", .variant = run.variant, .samples = run.taps, .width = w, .height = h, .frames = options.frames};
+        Record r{.demo = "shadows", .variant = run.variant, .samples = run.taps, .width = w, .height = h, .frames = frames};
         if (run.lambda >= 0) r.lambda = run.lambda;
         r.timing = run.tally.timing();
         r.rmse = run.tally.rmse();
         r.psnr = psnr(*r.rmse);
         const std::string stem = "shadows_" + std::string(run.lambda < 0 ? "pcf" : "amortized") + std::to_string(run.taps) +
                                  (run.lambda >= 0 ? "_l" + std::to_string(int(run.lambda * 100 + 0.5)) : "");
-        if (run.lambda == 0.6f || run.lambda < 0) {
+        if ((run.lambda == 0.6f && run.renderer == 0) || run.lambda < 0) {
             // The last frame was rendered in the loop; render it again only for the PCF variants
             // (their image is overwritten by the next variant), the cache state stays as it was.
             if (run.lambda < 0) render(run, lastFrame);
@@ -168,10 +205,10 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
             r.images["frame"] = savePng(options, color, stem + ".png");
             saveRgba8Difference(options, readRgba8(color, w, h), refLast, w, h, 4.0f, stem + "_diff.png", r, "difference x4");
         }
-        if (run.lambda == 0.6f) {
+        if (run.lambda == 0.6f && run.renderer == 0) {
             r.hitRate = lookups > 0 ? hits / lookups : 0.0;
             Texture vis;
-            renderers[0]->cache().visualize(vis);
+            renderers[4]->cache().visualize(vis);
             r.images["hits (green) / misses (red)"] = savePng(options, vis.id(), stem + "_hits.png");
         }
         std::fprintf(stderr, "shadows %-26s k=%3d lambda %.2f  median %7.2f ms  min %7.2f ms  RMSE %.5f\n", run.variant, run.taps,
@@ -179,6 +216,8 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
         records.push_back(std::move(r));
     }
     records.push_back(std::move(ref));
+    Record& amortized = *std::find_if(records.begin(), records.end(), [](const Record& r) { return r.variant == "amortized"; });
+    if (!options.smoke) compareFlows(options, *renderers[1], [&](int f) { const double t = t0 + f / 60.0; return frameAt(f, t, viewAt(t)); }, amortized);
     runConvergence(options, renderers, sweep, records, path, projection);
     return records;
 }

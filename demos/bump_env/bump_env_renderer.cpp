@@ -23,11 +23,13 @@ void setMat4(GLuint p, const char* name, const glm::mat4& m) {
 
 const char* variantName(Variant v) { return v == Variant::Brute ? "brute" : "amortized"; }
 
-Result<void> BumpEnvRenderer::init(int width, int height, const ShaderLibrary& library, const std::string& assetDir) {
+Result<void> BumpEnvRenderer::init(int width, int height, const ShaderLibrary& library, const std::string& assetDir, bool age,
+                                   bool stats) {
     width_ = width;
     height_ = height;
     // RGBA16F with rrc_storeAmortized (unbiased stochastic rounding) keeps the filter from stalling.
-    auto cache = Cache::create({.width = width, .height = height, .payloads = {{.format = GL_RGBA16F}}, .age = true});
+    auto cache = Cache::create({.width = width, .height = height, .payloads = {{.format = GL_RGBA16F}}, .age = age,
+                                .stats = stats});
     if (!cache) return cache.error();
     cache_ = std::move(cache).value();
     auto defines = cache_.defines();
@@ -35,13 +37,13 @@ Result<void> BumpEnvRenderer::init(int width, int height, const ShaderLibrary& l
     auto brute = buildProgram({.vertex = "bump_env/shaders/sphere.vert", .fragment = "bump_env/shaders/bump_env.frag"}, library);
     auto amortized = buildProgram({.vertex = "bump_env/shaders/sphere.vert", .fragment = "bump_env/shaders/bump_env.frag",
                                    .defines = std::move(defines)}, library);
-    auto present = demo::FullscreenPass::create(library, "bump_env/shaders/present.frag");
+    auto sky = demo::FullscreenPass::create(library, "bump_env/shaders/sky.frag");
     if (!brute) return brute.error();
     if (!amortized) return amortized.error();
-    if (!present) return present.error();
+    if (!sky) return sky.error();
     brute_ = std::move(brute).value();
     amortized_ = std::move(amortized).value();
-    present_ = std::move(present).value();
+    sky_ = std::move(sky).value();
     auto slopes = loadBumpSlopes(assetDir + "/bump.png");
     if (!slopes) return slopes.error();
     auto environment = loadCubeMap(assetDir + "/env");
@@ -51,14 +53,10 @@ Result<void> BumpEnvRenderer::init(int width, int height, const ShaderLibrary& l
     sphere_ = makeSphere(128, 64);
     bruteColor_ = makeTexture(GL_RGBA16F, width, height);
     bruteDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, width, height);
-    output_ = makeTexture(GL_RGBA8, width, height);
     bruteFb_ = createFramebuffer();
     glNamedFramebufferTexture(bruteFb_.id(), GL_COLOR_ATTACHMENT0, bruteColor_.id(), 0);
     glNamedFramebufferTexture(bruteFb_.id(), GL_DEPTH_ATTACHMENT, bruteDepth_.id(), 0);
-    outputFb_ = createFramebuffer();
-    glNamedFramebufferTexture(outputFb_.id(), GL_COLOR_ATTACHMENT0, output_.id(), 0);
-    if (auto r = checkFramebuffer(bruteFb_, "bump-env brute-force target"); !r) return r;
-    return checkFramebuffer(outputFb_, "bump-env output");
+    return checkFramebuffer(bruteFb_, "bump-env brute-force target");
 }
 
 void BumpEnvRenderer::drawSphere(GLuint p, const BumpSettings& s, const BumpFrame& frame, bool withCache) const {
@@ -87,45 +85,57 @@ void BumpEnvRenderer::drawSphere(GLuint p, const BumpSettings& s, const BumpFram
 }
 
 void BumpEnvRenderer::render(Variant variant, const BumpSettings& s, const BumpFrame& frame) {
+    lastVariant_ = variant;
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
     if (variant == Variant::Brute) {
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, bruteFb_.id());
         glViewport(0, 0, width_, height_);
-        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
         const float zero[4] = {0, 0, 0, 0};
         glClearNamedFramebufferfv(bruteFb_.id(), GL_COLOR, 0, zero);
         glClearNamedFramebufferfv(bruteFb_.id(), GL_DEPTH, 0, zero);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_GREATER);
         drawSphere(brute_.id(), s, frame, false);
-        glDepthFunc(GL_LESS);
-        glDisable(GL_DEPTH_TEST);
-        glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-        present(bruteColor_.id(), bruteDepth_.id(), frame);
-        return;
+        drawSky(frame, 1);
+    } else {
+        // One shading pass (a convex, culled object has no overdraw to save with a prepass): the
+        // lookup pass shades hits and misses alike, so the miss pass has nothing left to draw.
+        (void)cache_.beginFrame({.view = frame.view, .projection = frame.projection, .lambda = s.lambda, .objectsMoved = true,
+                                 .depthPrepass = false, .skipEmptyMissPass = false});
+        bool shadedAll = false;
+        (void)cache_.render(ControlFlow::TwoPass, [&](Pass pass) {
+            if (pass == Pass::Lookup || (pass == Pass::Miss && !shadedAll)) drawSphere(amortized_.id(), s, frame, true);
+            if (pass == Pass::Lookup) shadedAll = true;
+        });
+        cache_.endFrame();
+        // The sky goes into payload 0 only (the cache's other targets masked): behind the sphere,
+        // where the depth is still clear, so it never enters a lookup (such pixels fail its depth test).
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+        glEnable(GL_DEPTH_TEST);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cache_.framebuffer());
+        glViewport(0, 0, width_, height_);
+        drawSky(frame, 8);
     }
-    // One shading pass (a convex, culled object has no overdraw to save with a prepass): the
-    // lookup pass shades hits and misses alike, so the miss pass has nothing left to draw.
-    (void)cache_.beginFrame({.view = frame.view, .projection = frame.projection, .lambda = s.lambda, .objectsMoved = true,
-                             .depthPrepass = false, .skipEmptyMissPass = false});
-    bool shadedAll = false;
-    (void)cache_.render(ControlFlow::TwoPass, [&](Pass pass) {
-        if (pass == Pass::Lookup || (pass == Pass::Miss && !shadedAll)) drawSphere(amortized_.id(), s, frame, true);
-        if (pass == Pass::Lookup) shadedAll = true;
-    });
-    cache_.endFrame();
-    present(cache_.payload(0), cache_.depth(), frame);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
 }
 
-void BumpEnvRenderer::present(GLuint color, GLuint depth, const BumpFrame& frame) {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, outputFb_.id());
-    glViewport(0, 0, width_, height_);
-    glBindTextureUnit(0, color);
-    glBindTextureUnit(1, depth);
+GLuint BumpEnvRenderer::color() const { return lastVariant_ == Variant::Brute ? bruteColor_.id() : cache_.payload(0); }
+
+void BumpEnvRenderer::drawSky(const BumpFrame& frame, int attachments) {
+    // Only where nothing was drawn: a triangle at the (reversed-Z) far depth 0, tested for equality,
+    // so the sphere's pixels are rejected by the depth test before shading.
+    for (int i = 1; i < attachments; ++i) glColorMaski(GLuint(i), GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
     glBindTextureUnit(2, environment_.id());
-    const GLuint p = present_.program();
+    const GLuint p = sky_.program();
     setMat4(p, "u_inverseViewProjection", glm::mat4(glm::inverse(frame.projection * frame.view)));
-    present_.draw();
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    sky_.draw();
+    glDepthMask(GL_TRUE);
+    for (int i = 1; i < attachments; ++i) glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 } // namespace rrc::bump_env

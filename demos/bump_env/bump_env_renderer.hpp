@@ -31,24 +31,27 @@ struct BumpFrame {
 class BumpEnvRenderer {
 public:
     // Loads <assetDir>/bump.png and <assetDir>/env/{px,nx,py,ny,pz,nz}.png.
-    Result<void> init(int width, int height, const ShaderLibrary& library, const std::string& assetDir = "assets");
+    // `age` / `stats`: the cache's optional targets (see shadows::CacheFeatures).
+    Result<void> init(int width, int height, const ShaderLibrary& library, const std::string& assetDir = "assets",
+                      bool age = true, bool stats = true);
     void render(Variant variant, const BumpSettings& settings, const BumpFrame& frame);
 
-    GLuint color() const { return output_.id(); }   // RGBA8, the last render of either variant
+    GLuint color() const;   // RGBA16F: the last render (sphere and sky) of the last variant rendered
     Cache& cache() { return cache_; }
     GLuint environment() const { return environment_.id(); }
 
 private:
     void drawSphere(GLuint program, const BumpSettings& settings, const BumpFrame& frame, bool withCache) const;
-    void present(GLuint color, GLuint depth, const BumpFrame& frame);
+    void drawSky(const BumpFrame& frame, int attachments);
 
     int width_ = 0, height_ = 0;
     Cache cache_;
     Program brute_, amortized_;
-    demo::FullscreenPass present_;
+    demo::FullscreenPass sky_;
+    Variant lastVariant_ = Variant::Brute;
     demo::MeshBuffers sphere_;
-    Texture slopes_, environment_, bruteColor_, bruteDepth_, output_;
-    Framebuffer bruteFb_, outputFb_;
+    Texture slopes_, environment_, bruteColor_, bruteDepth_;
+    Framebuffer bruteFb_;
 };
 
 // A unit UV sphere (attributes 0 position, 1 normal), `slices` x `stacks` quads.

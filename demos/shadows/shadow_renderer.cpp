@@ -53,7 +53,7 @@ const char* flowName(Flow f) {
 }
 
 Result<void> ShadowRenderer::init(int width, int height, const ShaderLibrary& library, std::span<const demo::DrawCall> scene,
-                                  glm::dvec3 boundsMin, glm::dvec3 boundsMax, int shadowMapSize) {
+                                  glm::dvec3 boundsMin, glm::dvec3 boundsMax, int shadowMapSize, CacheFeatures features) {
     width_ = width;
     height_ = height;
     shadowMapSize_ = shadowMapSize;
@@ -62,8 +62,9 @@ Result<void> ShadowRenderer::init(int width, int height, const ShaderLibrary& li
     radius_ = 0.65 * glm::length(boundsMax - boundsMin) + 2.0;
     // Visibility amortizes in R32F: exact stores, no rounding bias in the recursive filter.
     auto cache = Cache::create({.width = width, .height = height,
-                                .payloads = {{.format = GL_R32F}, {.format = GL_RGBA8, .resample = Resample::Nearest}},
-                                .age = true});
+                                .payloads = {{.format = GL_R32F, .resample = features.bilinear ? Resample::Bilinear : Resample::Nearest},
+                                             {.format = GL_RGBA8, .resample = Resample::Nearest}},
+                                .age = features.age, .stats = features.stats, .bilinearDepth = features.bilinear});
     if (!cache) return cache.error();
     cache_ = std::move(cache).value();
     for (int amortized = 0; amortized < 2; ++amortized)

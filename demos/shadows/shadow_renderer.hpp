@@ -47,11 +47,20 @@ struct ShadowFrame {
     uint32_t frame = 0;
 };
 
+// Optional cache targets: the age target makes the filter a running mean while an entry is young
+// (faster convergence after misses), the stats target counts hits; each costs a fetch or a write.
+struct CacheFeatures {
+    bool age = true;
+    bool stats = true;
+    bool bilinear = true;   // false: nearest cached depth and visibility (plain texel fetches);
+                            // visibility is smooth across a pixel, so little is lost
+};
+
 class ShadowRenderer {
 public:
     // `scene`: static receivers and casters; their bounds fit the light's frustum.
     Result<void> init(int width, int height, const ShaderLibrary& library, std::span<const demo::DrawCall> scene,
-                      glm::dvec3 boundsMin, glm::dvec3 boundsMax, int shadowMapSize = 2048);
+                      glm::dvec3 boundsMin, glm::dvec3 boundsMax, int shadowMapSize = 2048, CacheFeatures features = {});
     void render(Variant variant, const ShadowSettings& settings, const ShadowFrame& frame);
 
     GLuint color(Variant v) const;        // final colour of the last render of `v`

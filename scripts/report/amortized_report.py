@@ -53,7 +53,7 @@ def convergence(demo, out_dir, baseline_label):
 
 def lambda_sweep(demo, rows, out_dir):
     sweep = sorted((r["lambda"], r["rmse"], r["ms_median"]) for r in rows
-                   if r["variant"].startswith("amortized") and r.get("lambda") is not None and r.get("rmse") is not None)
+                   if r["variant"] in ("amortized", "amortized (lambda sweep)") and r.get("rmse") is not None)
     if len(sweep) < 2:
         return []
     out_dir = pathlib.Path(out_dir)

@@ -53,7 +53,12 @@ void main() {
     vec4 color = vec4(sum / (n * n), 1.0);
 #ifdef AMORTIZED
     rrc_Lookup l = rrc_lookup(false);
-    if (l.hit) color = rrc_blend(rrc_fetchPayload0(l), color, l.age, rrc_tolerance.w);
+#ifdef RRC_AGE
+    uint age = l.age;
+#else
+    uint age = 65535u;   // no age target: the chapter's plain recursive filter
+#endif
+    if (l.hit) color = rrc_blend(rrc_fetchPayload0(l), color, age, rrc_tolerance.w);
     color = rrc_storeAmortized(color);
     rrc_writeCache(l);
 #endif

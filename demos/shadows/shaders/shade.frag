@@ -31,7 +31,12 @@ void main() {
 #ifdef PASS_LOOKUP
     if (!l.hit) discard;
 #endif
-    if (l.hit) visibility = rrc_blend(vec4(rrc_fetchPayload0(l).r), vec4(visibility), l.age, rrc_tolerance.w).r;
+#ifdef RRC_AGE
+    uint age = l.age;
+#else
+    uint age = 65535u;   // no age target: the chapter's plain recursive filter
+#endif
+    if (l.hit) visibility = rrc_blend(vec4(rrc_fetchPayload0(l).r), vec4(visibility), age, rrc_tolerance.w).r;
     visibility = rrc_storeAmortized(vec4(visibility)).r;
     rrc_writeCache(l);
 #endif
