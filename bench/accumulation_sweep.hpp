@@ -70,7 +70,10 @@ inline std::vector<Record> run(const Options& options, accumulation::Accumulatio
         }
         std::fprintf(stderr, "%s: frame at t=%.3f s done\n", sweep.demo.c_str(), time);
     }
-    auto median = [](std::vector<double> v) { std::sort(v.begin(), v.end()); return v[v.size() / 2]; };
+    auto median = [](std::vector<double> v) {   // of an even count: the mean of the middle two
+        std::sort(v.begin(), v.end());
+        return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+    };
     const int frames = int(sweep.frameTimes.size());
     const double lastTime = sweep.frameTimes.back();
     std::vector<Record> records;
