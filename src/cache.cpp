@@ -90,6 +90,11 @@ Result<void> validate(const CacheDesc& d) {
 
 } // namespace
 
+void restoreProgram(GLint previous) {
+    const auto program = static_cast<GLuint>(previous);
+    glUseProgram(program != 0 && glIsProgram(program) ? program : 0);
+}
+
 bool isIntegerFormat(GLenum format) {
     return format == GL_R32UI || format == GL_RG32UI || format == GL_RGBA32UI;
 }

@@ -156,7 +156,7 @@ Result<void> Cache::Impl::markMisses(bool probe) {
     if (probe) glEndQuery(GL_ANY_SAMPLES_PASSED);
     glBindVertexArray(0);
     glBindTextureUnit(0, static_cast<GLuint>(previousTexture));
-    glUseProgram(static_cast<GLuint>(previousProgram));
+    restoreProgram(previousProgram);
 
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cur().framebuffer.id());
     glEnable(GL_DEPTH_TEST);

@@ -71,6 +71,10 @@ struct Cache::Impl {
 };
 
 bool isIntegerFormat(GLenum format);
+// Makes `previous` (a GL_CURRENT_PROGRAM read earlier) current again, or no program when it no
+// longer exists: an application may delete its current program (ImGui does at shutdown), which
+// then lives only until another program is made current, i.e. until the library's own.
+void restoreProgram(GLint previous);
 // A program from the library's own snippets (rrc/internal/...); null names are left out.
 Result<Program> internalProgram(const char* vertex, const char* fragment, const char* compute);
 

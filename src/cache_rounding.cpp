@@ -100,7 +100,7 @@ Result<StoreRounding> probeStoreRounding(GLenum format) {
     glBindVertexArray(vao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(static_cast<GLuint>(previousVao));
-    glUseProgram(static_cast<GLuint>(previousProgram));
+    restoreProgram(previousProgram);
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
 

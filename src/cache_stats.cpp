@@ -77,7 +77,7 @@ void Cache::endFrame() {
     // 8x8 invocations per group, 4x4 pixels per invocation.
     glDispatchCompute(static_cast<GLuint>((s.desc.width + 31) / 32), static_cast<GLuint>((s.desc.height + 31) / 32), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glUseProgram(static_cast<GLuint>(previousProgram));
+    restoreProgram(previousProgram);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previousTexture));
     glActiveTexture(static_cast<GLenum>(activeTexture));
@@ -134,7 +134,7 @@ void Cache::visualize(Texture& target) const {
     glBindVertexArray(s.emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
-    glUseProgram(static_cast<GLuint>(previousProgram));
+    restoreProgram(previousProgram);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
 }
 

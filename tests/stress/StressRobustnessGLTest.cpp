@@ -537,5 +537,35 @@ TEST_F(StressRobustness, RenderLeavesTheDocumentedGlState) {
         }
 }
 
+// An application may delete the program it has current (ImGui does at shutdown): GL keeps it
+// alive only until another program is made current, so the library must not restore its name.
+TEST_F(StressRobustness, AProgramDeletedWhileCurrentIsNotRestored) {
+    const Object objects[] = {{.model = kWall, .prevModel = kWall}};
+    Cache cache = Cache::create({.width = 32, .height = 24}).value();
+    CacheScene scene(cache);
+    ASSERT_TRUE(scene.frame(cache, ControlFlow::TwoPass, Camera{}, objects));
+    ASSERT_TRUE(scene.frame(cache, ControlFlow::TwoPass, Camera{}, objects));   // lookup + marking pass
+    for (int step = 0; step < 2; ++step) {
+        {
+            Program doomed = program("stress/doomed.vert", "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n",
+                                     "stress/doomed.frag", "#version 450 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n");
+            glUseProgram(doomed.id());
+        }   // deleted while current
+        if (step == 0) {
+            Texture view;
+            cache.visualize(view);
+        } else {
+            const Camera camera;
+            ASSERT_TRUE(cache.beginFrame({.view = camera.view(), .projection = camera.projection(32.0 / 24.0, true)}).ok());
+            ASSERT_TRUE(cache.render(ControlFlow::TwoPass, [](Pass) {}).ok());
+            cache.endFrame();
+        }
+        GLint current = -1;
+        glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+        EXPECT_EQ(current, 0) << (step == 0 ? "visualize" : "render + endFrame");
+    }
+    // The fixture fails the test on any GL error (GL_INVALID_VALUE from restoring a dead name).
+}
+
 } // namespace
 } // namespace rrc::test
