@@ -121,13 +121,12 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
     const int w = options.width, h = options.height;
     const float sweep[] = {0.6f, 0.4f, 0.75f, 0.9f};   // renderer i amortizes with sweep[i]
     std::vector<std::unique_ptr<ShadowRenderer>> renderers;
-    // 0-3: the lambdas of `sweep`, with the chapter's plain recursive filter, no stats target and
-    // nearest resampling (each saves a fetch or a write per pixel: docs/shadows.md); 4: amortized
-    // + blur, with the age and stats targets and bilinear resampling,
+    // 0-3: the lambdas of `sweep`, with the chapter's plain recursive filter and no stats target
+    // (each saves a fetch or a write per pixel: docs/shadows.md); 4: amortized + blur, with both,
     // which also gives the hit rate (every variant follows the same camera path).
     for (int i = 0; i < 5; ++i) {
         renderers.push_back(std::make_unique<ShadowRenderer>());
-        const CacheFeatures features{.age = i == 4, .stats = i == 4, .bilinear = i == 4};
+        const CacheFeatures features{.age = i == 4, .stats = i == 4};
         if (auto r = renderers.back()->init(w, h, library, scene.draws, scene.boundsMin, scene.boundsMax, 2048, features); !r) return {};
     }
     std::vector<Run> runs = {{"pcf", 4, -1, 0, {}}, {"pcf", 16, -1, 0, {}}, {"amortized", 4, 0.6f, 0, {}}, {"amortized + blur", 4, 0.6f, 4, {}, true},

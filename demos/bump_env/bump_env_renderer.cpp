@@ -134,6 +134,7 @@ void BumpEnvRenderer::drawSky(const BumpFrame& frame, int attachments) {
     const GLuint p = sky_.program();
     setMat4(p, "u_inverseViewProjection", glm::mat4(glm::inverse(frame.projection * frame.view)));
     sky_.draw();
+    glUseProgram(0);   // a re-init (window resize) deletes our programs: none may stay current
     glDepthMask(GL_TRUE);
     for (int i = 1; i < attachments; ++i) glColorMaski(GLuint(i), GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

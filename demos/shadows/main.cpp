@@ -22,7 +22,7 @@ using namespace rrc::shadows;
 
 struct State {
     ShadowSettings settings;
-    std::string remap = "none", flow = "single-pass";
+    std::string remap = "none", flow = "one-pass";
     demo::DrawScene scene;
     ShadowRenderer renderer;
     Texture visualization;

@@ -132,6 +132,7 @@ void ShadowRenderer::postProcess(Variant variant, const ShadowSettings& settings
     glBindTextureUnit(1, albedo);
     glProgramUniform1i(composite_.program(), glGetUniformLocation(composite_.program(), "u_remap"), static_cast<int>(settings.remap));
     composite_.draw();
+    glUseProgram(0);   // a re-init (window resize) deletes our programs: none may stay current
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
 }
 
