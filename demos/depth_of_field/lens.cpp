@@ -1,5 +1,7 @@
 #include "lens.hpp"
 
+#include "support/poisson.hpp"
+
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -10,29 +12,8 @@
 namespace rrc::dof {
 
 std::vector<glm::dvec2> poissonDisk(int count, uint32_t seed) {
-    // mt19937's output is fixed by the standard; the distributions are not, so convert ourselves
-    // (the same pattern with every standard library: golden frames depend on it).
-    std::mt19937 rng(seed);
-    auto unit = [&] { return double(rng()) / 2147483648.0 - 1.0; };
-    auto inDisk = [&] {
-        for (;;) {
-            const glm::dvec2 p(unit(), unit());
-            if (glm::dot(p, p) <= 1.0) return p;
-        }
-    };
     std::vector<glm::dvec2> points;
-    for (int i = 0; i < count; ++i) {
-        glm::dvec2 best = inDisk();
-        double bestDistance = -1.0;
-        const int candidates = 10 * (i + 1);   // Mitchell's rule: candidates grow with the points
-        for (int c = 0; c < candidates && !points.empty(); ++c) {
-            const glm::dvec2 p = c == 0 ? best : inDisk();
-            double nearest = std::numeric_limits<double>::infinity();
-            for (const glm::dvec2& q : points) nearest = std::min(nearest, glm::distance(p, q));
-            if (nearest > bestDistance) { bestDistance = nearest; best = p; }
-        }
-        points.push_back(best);
-    }
+    for (const glm::vec2 p : demo::poissonDisk(count, seed, demo::kGrowingCandidates)) points.emplace_back(p);
     return points;
 }
 

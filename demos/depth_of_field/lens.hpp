@@ -11,9 +11,8 @@
 
 namespace rrc::dof {
 
-// `count` points in the unit disk by Mitchell's best-candidate dart throwing (each new point the
-// farthest of many random candidates from those placed): a Poisson-disk pattern with exactly
-// `count` points, the same for the same seed.
+// `count` points in the unit disk: support/poisson.hpp's best-candidate pattern with Mitchell's
+// growing candidate count, in double precision for the view matrices; the same for the same seed.
 std::vector<glm::dvec2> poissonDisk(int count, uint32_t seed = 1);
 double minDistance(const std::vector<glm::dvec2>& points);
 

@@ -31,6 +31,9 @@ private:
 // `count` points in the unit disk by Mitchell's best-candidate algorithm (each new point is the
 // farthest of `candidates` random ones from the points so far): a Poisson-disk-like blue-noise
 // pattern whose minimum spacing grows as 1/sqrt(count). Points lie strictly inside the disk.
+// candidates = kGrowingCandidates: Mitchell's own rule, 10 x (points so far + 1) candidates
+// (better spacing, quadratic cost: for the few dozen lens positions of depth of field).
+inline constexpr int kGrowingCandidates = 0;
 inline std::vector<glm::vec2> poissonDisk(int count, uint32_t seed, int candidates = 24) {
     PatternRandom random(seed);
     auto candidate = [&] {
@@ -42,7 +45,8 @@ inline std::vector<glm::vec2> poissonDisk(int count, uint32_t seed, int candidat
     for (int i = 0; i < count; ++i) {
         glm::vec2 best{0.0f};
         float bestDistance = -1.0f;
-        for (int c = 0; c < (i == 0 ? 1 : candidates); ++c) {
+        const int tries = i == 0 ? 1 : candidates == kGrowingCandidates ? 10 * (i + 1) : candidates;
+        for (int c = 0; c < tries; ++c) {
             const glm::vec2 p = candidate();
             float nearest = 1e30f;
             for (const glm::vec2& q : points) {
