@@ -36,6 +36,7 @@ struct Record {
 struct Bench {
     int width = 1024, height = 768, frames = 30, warmup = 5, octaves = 5;
     bool bilinearDepth = true, depthInPayload = false;
+    float resampleSnap = CacheDesc{}.resampleSnap;
     GLenum payloadFormat = GL_RGBA8;
     std::vector<std::string> overrides;   // NAME=PATH: replace a snippet by a file (experiments)
     std::vector<std::string> extraDefines;
@@ -52,7 +53,8 @@ struct Bench {
 
     Result<void> init() {
         auto c = Cache::create({.width = width, .height = height, .payloads = {{.format = payloadFormat, .resample = resample}},
-                                .stats = false, .depthInPayload = depthInPayload, .bilinearDepth = bilinearDepth});
+                                .stats = false, .depthInPayload = depthInPayload, .bilinearDepth = bilinearDepth,
+                                .resampleSnap = resampleSnap});
         if (!c) return c.error();
         cache = std::move(c).value();
         library.add(demo::supportShaders());
@@ -191,6 +193,7 @@ int main(int argc, char** argv) {
     app.add_flag("!--nearest-depth", b.bilinearDepth, "fetch cached depth without bilinear filtering");
     std::map<std::string, Resample> resamples{{"nearest", Resample::Nearest}, {"bilinear", Resample::Bilinear}, {"bicubic", Resample::Bicubic}};
     app.add_option("--resample", b.resample, "payload resampling")->transform(CLI::CheckedTransformer(resamples, CLI::ignore_case));
+    app.add_option("--resample-snap", b.resampleSnap, "CacheDesc::resampleSnap in texels (0: off)")->check(CLI::Range(0.0, 0.49));
     app.add_flag("--depth-in-payload", b.depthInPayload, "linear depth in payload alpha (RGBA16F payload), one fetch per lookup");
     app.add_option("--override", b.overrides, "replace a shader snippet by a file: NAME=PATH (experiments)")->delimiter(',');
     CLI11_PARSE(app, argc, argv);
