@@ -1,25 +1,9 @@
 #include "accumulation_renderer.hpp"
 
+#include "support/gl_util.hpp"
 #include "support/timing.hpp"
 
 namespace rrc::accumulation {
-namespace {
-
-Texture makeTexture(GLenum format, int w, int h) {
-    Texture t = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(t.id(), 1, format, w, h);
-    return t;
-}
-
-void setMat4(GLuint p, const char* name, const glm::mat4& m) {
-    if (GLint l = glGetUniformLocation(p, name); l >= 0) glProgramUniformMatrix4fv(p, l, 1, GL_FALSE, &m[0][0]);
-}
-
-void setFloat(GLuint p, const char* name, float v) {
-    if (GLint l = glGetUniformLocation(p, name); l >= 0) glProgramUniform1f(p, l, v);
-}
-
-} // namespace
 
 const char* variantName(Variant v) { return v == Variant::Brute ? "brute" : "cached"; }
 
@@ -52,8 +36,8 @@ Result<void> AccumulationRenderer::init(int width, int height, ShaderLibrary& li
         (skinned ? skinned_ : static_) = {std::move(built[0]).value(), std::move(built[1]).value(), std::move(built[2]).value(),
                                           std::move(built[3]).value(), std::move(built[4]).value()};
     }
-    bruteColor_ = makeTexture(GL_RGBA8, width, height);
-    bruteDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, width, height);
+    bruteColor_ = demo::makeTexture2D(GL_RGBA8, width, height);
+    bruteDepth_ = demo::makeTexture2D(GL_DEPTH_COMPONENT32F, width, height);
     bruteFb_ = createFramebuffer();
     glNamedFramebufferTexture(bruteFb_.id(), GL_COLOR_ATTACHMENT0, bruteColor_.id(), 0);
     glNamedFramebufferTexture(bruteFb_.id(), GL_DEPTH_ATTACHMENT, bruteDepth_.id(), 0);
@@ -80,12 +64,12 @@ void AccumulationRenderer::drawScene(Variant variant, Pass pass, const SampleVie
     };
     const GLuint ps = program(static_, variant, pass).id();
     glUseProgram(ps);
-    setFloat(ps, "u_patternScale", settings_.staticPatternScale);
+    demo::setUniform(ps, "u_patternScale", settings_.staticPatternScale);
     const GLint baseColor = glGetUniformLocation(ps, "u_baseColor");
     for (const demo::DrawCall& d : scene.statics) {
         const DrawMatrices m = matrices(d.model, d.prevModel);
-        setMat4(ps, "u_mvp", m.modelViewProj);
-        setMat4(ps, "u_model", glm::mat4(d.model));
+        demo::setUniform(ps, "u_mvp", m.modelViewProj);
+        demo::setUniform(ps, "u_model", glm::mat4(d.model));
         if (baseColor >= 0) glProgramUniform4fv(ps, baseColor, 1, &d.baseColor[0]);
         if (cache) cache->setDrawUniforms(ps, m, d.objectId);
         glBindVertexArray(d.vertexArray);
@@ -94,12 +78,12 @@ void AccumulationRenderer::drawScene(Variant variant, Pass pass, const SampleVie
     if (scene.character) {
         const GLuint pk = program(skinned_, variant, pass).id();
         glUseProgram(pk);
-        setFloat(pk, "u_patternScale", settings_.characterPatternScale);
+        demo::setUniform(pk, "u_patternScale", settings_.characterPatternScale);
         const GLint color = glGetUniformLocation(pk, "u_baseColor");
         scene.character->forEachDraw([&](const scene::DrawItem& item) {
             const DrawMatrices m = matrices(item.world, item.previousWorld);
-            setMat4(pk, "u_mvp", m.modelViewProj);
-            setMat4(pk, "u_model", glm::mat4(item.world));
+            demo::setUniform(pk, "u_mvp", m.modelViewProj);
+            demo::setUniform(pk, "u_model", glm::mat4(item.world));
             const glm::vec4 c = item.material ? item.material->baseColorFactor : glm::vec4(1.0f);
             if (color >= 0) glProgramUniform4fv(pk, color, 1, &c[0]);
             if (cache) cache->setDrawUniforms(pk, m, 0, scene.characterNeverCached);

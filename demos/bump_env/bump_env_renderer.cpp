@@ -1,25 +1,12 @@
 #include "bump_env_renderer.hpp"
 
+#include "../support/gl_util.hpp"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 
 namespace rrc::bump_env {
-namespace {
-
-Texture makeTexture(GLenum format, int w, int h) {
-    Texture t = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(t.id(), 1, format, w, h);
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return t;
-}
-
-void setMat4(GLuint p, const char* name, const glm::mat4& m) {
-    if (GLint l = glGetUniformLocation(p, name); l >= 0) glProgramUniformMatrix4fv(p, l, 1, GL_FALSE, &m[0][0]);
-}
-
-} // namespace
 
 const char* variantName(Variant v) { return v == Variant::Brute ? "brute" : "amortized"; }
 
@@ -51,8 +38,8 @@ Result<void> BumpEnvRenderer::init(int width, int height, const ShaderLibrary& l
     slopes_ = std::move(slopes).value();
     environment_ = std::move(environment).value();
     sphere_ = makeSphere(128, 64);
-    bruteColor_ = makeTexture(GL_RGBA16F, width, height);
-    bruteDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, width, height);
+    bruteColor_ = demo::makeTexture2D(GL_RGBA16F, width, height, GL_NEAREST);
+    bruteDepth_ = demo::makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST);
     bruteFb_ = createFramebuffer();
     glNamedFramebufferTexture(bruteFb_.id(), GL_COLOR_ATTACHMENT0, bruteColor_.id(), 0);
     glNamedFramebufferTexture(bruteFb_.id(), GL_DEPTH_ATTACHMENT, bruteDepth_.id(), 0);
@@ -66,8 +53,8 @@ void BumpEnvRenderer::drawSphere(GLuint p, const BumpSettings& s, const BumpFram
     const ViewState now{frame.view, frame.projection};
     const DrawMatrices m = withCache ? cache_.drawMatrices(frame.model, frame.prevModel)
                                      : composeDrawMatrices(now, now, frame.model, frame.model);
-    setMat4(p, "u_mvp", m.modelViewProj);
-    setMat4(p, "u_model", glm::mat4(frame.model));
+    demo::setUniform(p, "u_mvp", m.modelViewProj);
+    demo::setUniform(p, "u_model", glm::mat4(frame.model));
     const glm::vec3 eye(glm::inverse(frame.view)[3]);
     glProgramUniform3fv(p, glGetUniformLocation(p, "u_eye"), 1, &eye[0]);
     glProgramUniform1i(p, glGetUniformLocation(p, "u_grid"), std::clamp(s.grid, 1, 16));
@@ -132,7 +119,7 @@ void BumpEnvRenderer::drawSky(const BumpFrame& frame, int attachments) {
     glDepthMask(GL_FALSE);
     glBindTextureUnit(2, environment_.id());
     const GLuint p = sky_.program();
-    setMat4(p, "u_inverseViewProjection", glm::mat4(glm::inverse(frame.projection * frame.view)));
+    demo::setUniform(p, "u_inverseViewProjection", glm::mat4(glm::inverse(frame.projection * frame.view)));
     sky_.draw();
     glUseProgram(0);   // a re-init (window resize) deletes our programs: none may stay current
     glDepthMask(GL_TRUE);

@@ -71,9 +71,6 @@ demo::DemoDesc depthOfFieldDemo() {
     d.outputs = [](demo::App&) {
         demo::Outputs o{.color = state.renderer.result()};
         if (state.variant == Variant::Cached) {
-            // After the window closes, ImGui's deleted program can still be current; visualize()
-            // would save and restore that name (GL_INVALID_VALUE): unbind it first.
-            glUseProgram(0);
             state.renderer.cache().visualize(state.visualization);   // the last view's hits
             o.visualization = state.visualization.id();
         }

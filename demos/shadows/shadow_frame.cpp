@@ -2,16 +2,14 @@
 // amortized one, in the control flow chosen), then the optional blur and composite.
 #include "shadow_renderer.hpp"
 
+#include "../support/gl_util.hpp"
+
 #include <rrc/motion.hpp>
 
 #include <algorithm>
 
 namespace rrc::shadows {
 namespace {
-
-void setMat4(GLuint p, const char* name, const glm::mat4& m) {
-    if (GLint l = glGetUniformLocation(p, name); l >= 0) glProgramUniformMatrix4fv(p, l, 1, GL_FALSE, &m[0][0]);
-}
 
 bool needsComposite(const ShadowSettings& s) { return s.blur || s.remap != Remap::None; }
 
@@ -25,7 +23,7 @@ void ShadowRenderer::drawScene(GLuint p, const ShadowFrame& frame, const ShadowS
     glUseProgram(p);
     glBindTextureUnit(kShadowUnitBinding, shadowMap_.id());
     auto uniform = [&](const char* name) { return glGetUniformLocation(p, name); };
-    setMat4(p, "u_lightMatrix", glm::mat4(lightMatrix_));
+    demo::setUniform(p, "u_lightMatrix", glm::mat4(lightMatrix_));
     if (GLint l = uniform("u_taps"); l >= 0) glProgramUniform1i(p, l, std::clamp(settings.taps, 1, 256));
     if (GLint l = uniform("u_disk"); l >= 0) glProgramUniform2fv(p, l, static_cast<GLsizei>(disk_.size() / 2), disk_.data());
     if (GLint l = uniform("u_radius"); l >= 0) glProgramUniform1f(p, l, float(settings.radius / (2.0 * radius_)));
@@ -37,8 +35,8 @@ void ShadowRenderer::drawScene(GLuint p, const ShadowFrame& frame, const ShadowS
     const ViewState now{frame.view, frame.projection};
     auto draw = [&](const demo::DrawCall& d) {
         const DrawMatrices m = withCache ? cache_.drawMatrices(d.model, d.prevModel) : composeDrawMatrices(now, now, d.model, d.model);
-        setMat4(p, "u_mvp", m.modelViewProj);
-        setMat4(p, "u_model", glm::mat4(d.model));
+        demo::setUniform(p, "u_mvp", m.modelViewProj);
+        demo::setUniform(p, "u_model", glm::mat4(d.model));
         if (baseColor >= 0) glProgramUniform4fv(p, baseColor, 1, &d.baseColor[0]);
         if (withCache) cache_.setDrawUniforms(p, m, d.objectId);
         glBindVertexArray(d.vertexArray);

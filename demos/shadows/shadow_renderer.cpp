@@ -1,5 +1,6 @@
 #include "shadow_renderer.hpp"
 
+#include "../support/gl_util.hpp"
 #include "../support/poisson.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,17 +9,6 @@ namespace rrc::shadows {
 namespace {
 
 constexpr int kMaxTaps = 256;
-
-
-Texture makeTexture(GLenum format, int w, int h, GLenum filter = GL_NEAREST) {
-    Texture t = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(t.id(), 1, format, w, h);
-    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, filter);
-    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, filter);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return t;
-}
 
 Result<Framebuffer> makeFramebuffer(std::initializer_list<GLuint> colors, GLuint depth, const char* what) {
     Framebuffer fb = createFramebuffer();
@@ -33,10 +23,6 @@ Result<Framebuffer> makeFramebuffer(std::initializer_list<GLuint> colors, GLuint
     if (buffers.empty()) glNamedFramebufferDrawBuffer(fb.id(), GL_NONE);
     if (auto r = checkFramebuffer(fb, what); !r) return r.error();
     return fb;
-}
-
-void setMat4(GLuint p, const char* name, const glm::mat4& m) {
-    if (GLint l = glGetUniformLocation(p, name); l >= 0) glProgramUniformMatrix4fv(p, l, 1, GL_FALSE, &m[0][0]);
 }
 
 } // namespace
@@ -92,7 +78,7 @@ Result<void> ShadowRenderer::init(int width, int height, const ShaderLibrary& li
     blur_ = std::move(blur).value();
     composite_ = std::move(composite).value();
 
-    shadowMap_ = makeTexture(GL_DEPTH_COMPONENT32F, shadowMapSize, shadowMapSize, GL_LINEAR);
+    shadowMap_ = demo::makeTexture2D(GL_DEPTH_COMPONENT32F, shadowMapSize, shadowMapSize, GL_LINEAR, GL_CLAMP_TO_EDGE);
     glTextureParameteri(shadowMap_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTextureParameteri(shadowMap_.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glTextureParameteri(shadowMap_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
@@ -100,15 +86,15 @@ Result<void> ShadowRenderer::init(int width, int height, const ShaderLibrary& li
     const float far[4] = {1, 1, 1, 1};   // outside the light's frustum: lit
     glTextureParameterfv(shadowMap_.id(), GL_TEXTURE_BORDER_COLOR, far);
     auto shadowFb = makeFramebuffer({}, shadowMap_.id(), "shadow map");
-    staticDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, shadowMapSize, shadowMapSize);
+    staticDepth_ = demo::makeTexture2D(GL_DEPTH_COMPONENT32F, shadowMapSize, shadowMapSize, GL_NEAREST, GL_CLAMP_TO_EDGE);
     auto staticFb = makeFramebuffer({}, staticDepth_.id(), "static shadow depth");
     if (!staticFb) return staticFb.error();
     staticFb_ = std::move(staticFb).value();
-    pcf_.visibility = makeTexture(GL_R32F, width, height);
-    pcf_.color = makeTexture(GL_RGBA8, width, height);
-    pcf_.depth = makeTexture(GL_DEPTH_COMPONENT32F, width, height);
+    pcf_.visibility = demo::makeTexture2D(GL_R32F, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    pcf_.color = demo::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    pcf_.depth = demo::makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
     auto pcfFb = makeFramebuffer({pcf_.visibility.id(), pcf_.color.id()}, pcf_.depth.id(), "PCF target");
-    blurred_ = makeTexture(GL_R32F, width, height);
+    blurred_ = demo::makeTexture2D(GL_R32F, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
     auto blurFb = makeFramebuffer({blurred_.id()}, 0, "blur target");
     if (!shadowFb) return shadowFb.error();
     if (!pcfFb) return pcfFb.error();
@@ -117,7 +103,7 @@ Result<void> ShadowRenderer::init(int width, int height, const ShaderLibrary& li
     pcf_.fb = std::move(pcfFb).value();
     blurFb_ = std::move(blurFb).value();
     for (int v = 0; v < 2; ++v) {
-        composited_[v] = makeTexture(GL_RGBA8, width, height);
+        composited_[v] = demo::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
         auto fb = makeFramebuffer({composited_[v].id()}, 0, "composite target");
         if (!fb) return fb.error();
         compositeFb_[v] = std::move(fb).value();
@@ -131,7 +117,7 @@ Result<void> ShadowRenderer::init(int width, int height, const ShaderLibrary& li
 }
 
 void ShadowRenderer::drawDepth(const glm::dmat4& model, GLuint vertexArray, GLsizei count, GLenum type) const {
-    setMat4(lightDepth_.id(), "u_mvp", glm::mat4(lightProjection_ * lightView_ * model));
+    demo::setUniform(lightDepth_.id(), "u_mvp", glm::mat4(lightProjection_ * lightView_ * model));
     glBindVertexArray(vertexArray);
     glDrawElements(GL_TRIANGLES, count, type, nullptr);
 }

@@ -1,23 +1,11 @@
 #include "stereo_renderer.hpp"
 
+#include "../support/gl_util.hpp"
 #include "../support/timing.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace rrc::stereo {
-namespace {
-
-Texture makeTexture(GLenum format, int w, int h) {
-    Texture t = createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(t.id(), 1, format, w, h);
-    return t;
-}
-
-void setMat4(GLuint p, const char* name, const glm::mat4& m) {
-    if (GLint l = glGetUniformLocation(p, name); l >= 0) glProgramUniformMatrix4fv(p, l, 1, GL_FALSE, &m[0][0]);
-}
-
-} // namespace
 
 const char* variantName(Variant v) {
     switch (v) {
@@ -76,11 +64,11 @@ Result<void> StereoRenderer::init(int width, int height, ShaderLibrary& library,
     if (!composite) return composite.error();
     composite_ = std::move(composite).value();
 
-    bruteLeft_ = makeTexture(GL_RGBA8, width, height);
-    bruteRight_ = makeTexture(GL_RGBA8, width, height);
-    bruteSpecular_ = makeTexture(GL_R8, width, height);
-    bruteDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, width, height);
-    anaglyph_ = makeTexture(GL_RGBA8, width, height);
+    bruteLeft_ = demo::makeTexture2D(GL_RGBA8, width, height);
+    bruteRight_ = demo::makeTexture2D(GL_RGBA8, width, height);
+    bruteSpecular_ = demo::makeTexture2D(GL_R8, width, height);
+    bruteDepth_ = demo::makeTexture2D(GL_DEPTH_COMPONENT32F, width, height);
+    anaglyph_ = demo::makeTexture2D(GL_RGBA8, width, height);
     for (auto [fb, color] : {std::pair{&bruteLeftFb_, &bruteLeft_}, std::pair{&bruteRightFb_, &bruteRight_}}) {
         *fb = createFramebuffer();
         glNamedFramebufferTexture(fb->id(), GL_COLOR_ATTACHMENT0, color->id(), 0);
@@ -108,8 +96,8 @@ void StereoRenderer::drawScene(const Program& program, const glm::dmat4& view, c
     const ViewState now{view, projection};
     for (const demo::DrawCall& d : scene) {
         const DrawMatrices m = cache ? cache->drawMatrices(d.model, d.prevModel) : composeDrawMatrices(now, now, d.model, d.model);
-        setMat4(p, "u_mvp", m.modelViewProj);
-        setMat4(p, "u_model", glm::mat4(d.model));
+        demo::setUniform(p, "u_mvp", m.modelViewProj);
+        demo::setUniform(p, "u_model", glm::mat4(d.model));
         if (baseColor >= 0) glProgramUniform4fv(p, baseColor, 1, &d.baseColor[0]);
         if (cache) cache->setDrawUniforms(p, m, d.objectId);
         glBindVertexArray(d.vertexArray);
