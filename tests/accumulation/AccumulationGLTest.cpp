@@ -1,73 +1,32 @@
 // The accumulation renderer on a static scene (the procedural colonnade): cached equals brute force
 // where it must (one sample; a still camera, where every sample hits), the weights sum to one, and
 // the depth-of-field error shrinks with N towards the many-sample reference in both variants.
-#include "support/gl_test.hpp"
+#include "accumulation_fixture.hpp"
 
-#include "accumulation/accumulation_renderer.hpp"
 #include "depth_of_field/lens.hpp"
-#include "support/procedural.hpp"
-#include "support/timing.hpp"
 
 #include <rrc/image.hpp>
-#include <rrc/projection.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
-
-namespace rrc::accumulation {
-std::span<const EmbeddedFile> shaders();
-}
 
 namespace rrc::test {
 namespace {
 
 using accumulation::Variant;
 
-constexpr int kWidth = 128, kHeight = 96;
-
-class Accumulation : public GLTest {
+class Accumulation : public AccumulationFixture {
 protected:
-    void SetUp() override {
-        GLTest::SetUp();
-        library.add(demo::supportShaders());
-        library.add(accumulation::shaders());
-        ASSERT_TRUE(renderer.init(kWidth, kHeight, library, {.octaves = 2}).ok());
-        scene = demo::makeColonnade(4);
-    }
-    void TearDown() override {
-        renderer = {};
-        scene = {};
-        GLTest::TearDown();
-    }
-
     // Depth of field through the colonnade: n lens samples (nearest-neighbour order), or the
     // pinhole view n times when aperture is 0.
     std::vector<glm::vec4> render(Variant variant, int n, double aperture, bool moving = false) {
         const glm::dmat4 view = glm::lookAt(glm::dvec3(3.0, 2.0, 9.0), glm::dvec3(0.0, 1.5, 0.0), glm::dvec3(0, 1, 0));
-        const glm::dmat4 projection = perspectiveReversedZ(0.9, double(kWidth) / kHeight, 0.1);
+        const glm::dmat4 projection = AccumulationFixture::projection();
         const auto lens = dof::ordered(dof::poissonDisk(n), dof::LensOrder::NearestNeighbour);
         renderer.render(variant, {.statics = scene.draws, .moving = moving}, n, [&](int i, int) {
             return accumulation::SampleView{dof::lensView(view, lens[size_t(i)] * aperture, 6.0), projection};
         }, true);
         return pixels(renderer.result());
     }
-
-    static std::vector<glm::vec4> pixels(GLuint texture) {
-        std::vector<glm::vec4> p(size_t(kWidth * kHeight));
-        glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(p.size() * sizeof(glm::vec4)), p.data());
-        return p;
-    }
-
-    static double rmse(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
-        double sum = 0;
-        for (size_t i = 0; i < a.size(); ++i) {
-            const glm::dvec3 d = glm::dvec3(a[i]) - glm::dvec3(b[i]);
-            sum += glm::dot(d, d) / 3.0;
-        }
-        return std::sqrt(sum / double(a.size()));
-    }
-
-    accumulation::AccumulationRenderer renderer;
-    demo::ProceduralScene scene;
 };
 
 TEST_F(Accumulation, OneSampleCachedEqualsBruteForce) {

@@ -2,51 +2,34 @@
 // the cached variant (each time sample looks up the previous sample's cache, with the previous
 // sample's bones) hits most pixels and stays as close to the many-sample reference as brute force;
 // forcing the character's misses (an object whose look changes within the shutter) costs hits only.
-#include "support/gl_test.hpp"
+#include "accumulation_fixture.hpp"
 
-#include "accumulation/accumulation_renderer.hpp"
 #include "motion_blur/shutter.hpp"
-#include "support/procedural.hpp"
-#include "support/timing.hpp"
-
-#include <rrc/projection.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
-
-namespace rrc::accumulation {
-std::span<const EmbeddedFile> shaders();
-}
 
 namespace rrc::test {
 namespace {
 
 using accumulation::Variant;
 
-constexpr int kWidth = 128, kHeight = 96;
-
-class MotionBlur : public GLTest {
+class MotionBlur : public AccumulationFixture {
 protected:
     void SetUp() override {
-        GLTest::SetUp();
-        library.add(demo::supportShaders());
-        library.add(accumulation::shaders());
-        ASSERT_TRUE(renderer.init(kWidth, kHeight, library, {.octaves = 2}).ok());
-        scene = demo::makeColonnade(4);
+        AccumulationFixture::SetUp();
         auto loaded = accumulation::Character::load(RRC_ASSETS "/character.glb");
         ASSERT_TRUE(loaded.ok());
         character = std::move(loaded).value();
     }
     void TearDown() override {
-        renderer = {};
-        scene = {};
         character = {};
-        GLTest::TearDown();
+        AccumulationFixture::TearDown();
     }
 
     // The character runs along -x in front of the colonnade; the camera follows it, lagging.
     std::vector<glm::vec4> render(Variant variant, int n, bool neverCacheCharacter = false) {
         const motion_blur::Shot shot{.shutter = 1.0 / 30.0};
-        const glm::dmat4 projection = perspectiveReversedZ(0.9, double(kWidth) / kHeight, 0.1);
+        const glm::dmat4 projection = AccumulationFixture::projection();
         const accumulation::SceneRef ref{.statics = scene.draws, .character = &character,
                                          .characterNeverCached = neverCacheCharacter};
         renderer.render(variant, ref, n, [&](int i, int count) {
@@ -56,22 +39,9 @@ protected:
             const glm::dvec3 eye(2.4 - 3.0 * t, 1.6, 7.0);
             return accumulation::SampleView{glm::lookAt(eye, runner + glm::dvec3(0, 1, 0), glm::dvec3(0, 1, 0)), projection};
         }, true);
-        std::vector<glm::vec4> p(size_t(kWidth * kHeight));
-        glGetTextureImage(renderer.result(), 0, GL_RGBA, GL_FLOAT, GLsizei(p.size() * sizeof(glm::vec4)), p.data());
-        return p;
+        return pixels(renderer.result());
     }
 
-    static double rmse(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
-        double sum = 0;
-        for (size_t i = 0; i < a.size(); ++i) {
-            const glm::dvec3 d = glm::dvec3(a[i]) - glm::dvec3(b[i]);
-            sum += glm::dot(d, d) / 3.0;
-        }
-        return std::sqrt(sum / double(a.size()));
-    }
-
-    accumulation::AccumulationRenderer renderer;
-    demo::ProceduralScene scene;
     accumulation::Character character;
 };
 
