@@ -1,6 +1,7 @@
 // What every rrc-bench demo runner shares: options, result records, image output and error
 // metrics against a reference.
 #pragma once
+#include <rrc/cache.hpp>
 #include <rrc/image.hpp>
 
 #include "support/timing.hpp"
@@ -20,6 +21,9 @@ struct Options {
     bool smoke = false, full = false;
     double eyeSeparation = 0.065;   // stereo: metres (human interocular distance)
     std::string flow = "two-pass";  // cached variants: one-pass, two-pass, two-pass-no-probe
+
+    ControlFlow cachedFlow() const { return flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass; }
+    bool probe() const { return flow == "two-pass"; }   // FrameDesc::skipEmptyMissPass
 };
 
 struct Record {

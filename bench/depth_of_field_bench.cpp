@@ -24,8 +24,7 @@ std::vector<Record> runDepthOfField(const Options& options, ShaderLibrary& libra
     if (!scene) return {};
     accumulation::AccumulationRenderer renderer;
     if (auto r = renderer.init(options.width, options.height, library,
-                               {.flow = options.flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass,
-                                .probe = options.flow == "two-pass"});
+                               {.flow = options.cachedFlow(), .probe = options.probe()});
         !r)
         return {};
     const double aperture = 0.12, focus = 9.0;   // as rrc-depth-of-field's defaults

@@ -22,8 +22,7 @@ std::vector<Record> runMotionBlur(const Options& options, ShaderLibrary& library
     if (!character) return {};
     accumulation::AccumulationRenderer renderer;
     if (auto r = renderer.init(options.width, options.height, library,
-                               {.flow = options.flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass,
-                                .probe = options.flow == "two-pass"});
+                               {.flow = options.cachedFlow(), .probe = options.probe()});
         !r)
         return {};
     const motion_blur::Shot shot;
