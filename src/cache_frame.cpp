@@ -216,40 +216,40 @@ Result<void> Cache::render(ControlFlow flow, const std::function<void(Pass)>& dr
     } else if (!haveCache) {
         // Everything misses (first frame, cut, resize): no lookup, no probe, just the misses.
         pass(Pass::Miss, shadeTest, !prepass, true);
-    } else if (markByOutcome) {
-        pass(Pass::Lookup, shadeTest, false, true);
-        if (auto r = s.markMisses(s.frameDesc.skipEmptyMissPass); !r) return r;
-        if (s.frameDesc.skipEmptyMissPass) glBeginConditionalRender(s.probe.id(), GL_QUERY_WAIT);
-        pass(Pass::Miss, shadeTest, false, true);
-        if (s.frameDesc.skipEmptyMissPass) glEndConditionalRender();
+    } else {
+        // How the miss pass finds its pixels (docs/cache.md, "Control flow"):
+        // - prepass + outcome target: markMisses() sets stencil 2 where the lookup did not hit;
+        // - prepass only: hits set stencil 1 in the lookup pass (which is then depth-tested late),
+        //   the miss pass takes stencil 0;
+        // - no prepass: the miss pass relies on the depth the hits wrote: a strict test passes
+        //   only where the nearest surface was discarded.
+        const bool skipEmpty = s.frameDesc.skipEmptyMissPass;
+        if (markByOutcome) {
+            pass(Pass::Lookup, shadeTest, false, true);
+            if (auto r = s.markMisses(skipEmpty); !r) return r;   // also the probe
+        } else {
+            if (prepass) {
+                glEnable(GL_STENCIL_TEST);
+                glStencilFunc(GL_ALWAYS, 1, 0xff);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+            }
+            pass(Pass::Lookup, shadeTest, !prepass, true);
+            if (prepass) {
+                glStencilFunc(GL_EQUAL, 0, 0xff);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+            }
+            if (skipEmpty) {
+                glBeginQuery(GL_ANY_SAMPLES_PASSED, s.probe.id());
+                pass(Pass::Probe, shadeTest, false, false);
+                glEndQuery(GL_ANY_SAMPLES_PASSED);
+            }
+        }
+        if (skipEmpty) glBeginConditionalRender(s.probe.id(), GL_QUERY_WAIT);
+        pass(Pass::Miss, shadeTest, !prepass, true);
+        if (skipEmpty) glEndConditionalRender();
         glDisable(GL_STENCIL_TEST);
         glStencilFunc(GL_ALWAYS, 0, 0xff);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    } else {
-        // Without an outcome target (stats off), hits mark the stencil (so the lookup pass is
-        // depth-tested late) and the miss pass takes the unmarked pixels.
-        // Without one, the miss pass relies on the depth the hits wrote: a strict test passes
-        // only where the nearest surface was discarded.
-        if (prepass) {
-            glEnable(GL_STENCIL_TEST);
-            glStencilFunc(GL_ALWAYS, 1, 0xff);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        }
-        pass(Pass::Lookup, shadeTest, !prepass, true);
-        if (prepass) {
-            glStencilFunc(GL_EQUAL, 0, 0xff);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        }
-        if (s.frameDesc.skipEmptyMissPass) {
-            glBeginQuery(GL_ANY_SAMPLES_PASSED, s.probe.id());
-            pass(Pass::Probe, shadeTest, false, false);
-            glEndQuery(GL_ANY_SAMPLES_PASSED);
-            glBeginConditionalRender(s.probe.id(), GL_QUERY_WAIT);
-        }
-        pass(Pass::Miss, shadeTest, !prepass, true);
-        if (s.frameDesc.skipEmptyMissPass) glEndConditionalRender();
-        glDisable(GL_STENCIL_TEST);
-        glStencilFunc(GL_ALWAYS, 0, 0xff);
     }
     // Leave the depth state as GL's defaults, the output framebuffer bound.
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
