@@ -44,6 +44,16 @@ bool supportedFormat(GLenum format) {
     return std::any_of(std::begin(kFormats), std::end(kFormats), [&](auto& f) { return f.format == format; });
 }
 
+// The payload-0 channel that holds linear depth with CacheDesc::depthInPayload: the last one of
+// a float format with room for it (nullptr: none).
+const char* depthChannel(GLenum format) {
+    switch (format) {
+    case GL_RG16F: case GL_RG32F: return "g";
+    case GL_RGBA16F: case GL_RGBA32F: return "a";
+    default: return nullptr;
+    }
+}
+
 Texture makeTexture(GLenum format, int width, int height, GLenum filter) {
     Texture t = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(t.id(), 1, format, width, height);
@@ -71,8 +81,9 @@ Result<void> validate(const CacheDesc& d) {
         if (isIntegerFormat(p.format) && p.resample != Resample::Nearest)
             return bad("payload " + std::to_string(i) + ": integer formats resample Nearest only");
     }
-    if (d.depthInPayload && d.payloads[0].format != GL_RGBA32F && d.payloads[0].format != GL_RGBA16F)
-        return bad("depthInPayload needs payload 0 in GL_RGBA32F or GL_RGBA16F");
+    if (d.depthInPayload && !depthChannel(d.payloads[0].format))
+        return bad("depthInPayload needs payload 0 in GL_RG16F, GL_RG32F, GL_RGBA16F or GL_RGBA32F (got " +
+                   hex(d.payloads[0].format) + ")");
     if (!(d.depthTolerance > 0.0f) || !std::isfinite(d.depthTolerance))
         return bad("depthTolerance must be finite and > 0 (got " + std::to_string(d.depthTolerance) + ")");
     if (!(d.slopeTolerance >= 0.0f) || !std::isfinite(d.slopeTolerance)) return bad("slopeTolerance must be finite and >= 0");
@@ -231,7 +242,10 @@ std::vector<Define> Cache::defines() const {
         out.push_back({"RRC_STATS"});
         out.push_back({"RRC_OUTCOME_LOCATION", std::to_string(location++)});
     }
-    if (d.depthInPayload) out.push_back({"RRC_DEPTH_IN_PAYLOAD"});
+    if (d.depthInPayload) {
+        out.push_back({"RRC_DEPTH_IN_PAYLOAD"});
+        out.push_back({"RRC_DEPTH_CHANNEL", depthChannel(d.payloads[0].format)});
+    }
     if (d.refresh) out.push_back({"RRC_REFRESH"});
     if (d.maxScale > 0.0f) out.push_back({"RRC_MAX_SCALE"});
     if (!d.bilinearDepth) out.push_back({"RRC_NEAREST_DEPTH"});

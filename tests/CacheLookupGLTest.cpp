@@ -125,6 +125,44 @@ TEST_F(CacheLookup, MovingOccluderMissesExactlyTheDisoccludedPixels) {
     EXPECT_GT(occluderHits, 100u);   // the moving object itself reprojects with its previous model
 }
 
+// The chapter's single-render-target trick: linear depth in payload 0's last channel, one fetch
+// for the depth test and the value. Same outcomes as the depth texture, pixel for pixel, for
+// RGBA and RG payloads (nearest fetches, so both read the same texel).
+TEST_F(CacheLookup, DepthInPayloadGivesTheOutcomesOfTheDepthTexture) {
+    Camera camera;
+    const Camera moved{.eye = {0.15, -0.1, 0.2}, .target = {0.15, -0.1, -0.8}};
+    const glm::dmat4 before = quadAt({-0.613, 0.017, -5}, {1, 1}), after = quadAt({0.219, 0.311, -5}, {1, 1});
+    const Object frame1[] = {kWall, {.model = before, .prevModel = before, .id = 2}};
+    const Object frame2[] = {kWall, {.model = after, .prevModel = before, .id = 2}};
+    auto outcomesOf = [&](CacheDesc desc) {
+        desc.width = W;   // not make(): it widens RGBA16F
+        desc.height = H;
+        auto created = Cache::create(desc);
+        EXPECT_TRUE(created.ok());
+        if (!created) return std::vector<uint32_t>{};
+        Cache cache = std::move(created).value();
+        CacheScene scene(cache);
+        EXPECT_TRUE(scene.frame(cache, ControlFlow::TwoPass, camera, frame1));
+        EXPECT_TRUE(scene.frame(cache, ControlFlow::TwoPass, moved, frame2));
+        return readUint(cache.outcomes());
+    };
+    const auto reference = outcomesOf({.payloads = {{.format = GL_RGBA32F, .resample = Resample::Nearest}}, .bilinearDepth = false});
+    size_t hits = 0, disoccluded = 0;
+    for (uint32_t o : reference) {
+        hits += o == uint32_t(Outcome::Hit);
+        disoccluded += o == uint32_t(Outcome::Disoccluded);
+    }
+    std::printf("depth in payload: reference %zu hits, %zu disoccluded\n", hits, disoccluded);
+    EXPECT_GT(hits, size_t(W * H / 2));
+    EXPECT_GT(disoccluded, 100u);
+    for (GLenum format : {GL_RGBA32F, GL_RGBA16F, GL_RG32F, GL_RG16F}) {
+        const auto outcomes = outcomesOf({.payloads = {{.format = format, .resample = Resample::Nearest}}, .depthInPayload = true});
+        size_t differ = 0;
+        for (size_t i = 0; i < outcomes.size(); ++i) differ += outcomes[i] != reference[i];
+        EXPECT_EQ(differ, 0u) << "format 0x" << std::hex << format;
+    }
+}
+
 TEST_F(CacheLookup, InvalidateMakesEverythingMissAndSkipsTheLookup) {
     Cache cache = make();
     CacheScene scene(cache);

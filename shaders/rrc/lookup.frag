@@ -61,12 +61,20 @@ struct rrc_Lookup {
     uint outcome;
     vec2 uv;     // cache texture coordinate
     uint age;    // frames the cached entry has survived (0 without RRC_AGE)
+#ifdef RRC_DEPTH_IN_PAYLOAD
+    vec4 payload0;   // fetched once for the depth test and reused by rrc_fetchPayload0 (hits)
+#endif
 };
 
-// Linear view depth of the cache entry at `uv`.
+#ifndef RRC_DEPTH_CHANNEL
+#define RRC_DEPTH_CHANNEL a
+#endif
+
+// Linear view depth of the cache entry at `uv` (with RRC_DEPTH_IN_PAYLOAD the caller reads it
+// from the payload fetch instead).
 float rrc_cachedLinearDepth(vec2 uv) {
 #ifdef RRC_DEPTH_IN_PAYLOAD
-    return RRC_PAYLOAD0_FETCH(rrc_payload0, uv).a;
+    return RRC_PAYLOAD0_FETCH(rrc_payload0, uv).RRC_DEPTH_CHANNEL;
 #else
 #ifdef RRC_NEAREST_DEPTH
     float d = rrc_sampleNearest(rrc_cachedDepth, uv).r;
@@ -78,7 +86,7 @@ float rrc_cachedLinearDepth(vec2 uv) {
 }
 
 // Linear view depth of the current fragment (perspective: 1 / gl_FragCoord.w), e.g. to store
-// in payload 0's alpha with RRC_DEPTH_IN_PAYLOAD.
+// in payload 0's last channel (alpha, or green for RG formats) with RRC_DEPTH_IN_PAYLOAD.
 float rrc_currentLinearDepth() { return 1.0 / gl_FragCoord.w; }
 
 // The lookup. `forceMiss` is the caller's own predicate (e.g. a saturated highlight).
@@ -86,6 +94,9 @@ rrc_Lookup rrc_lookup(bool forceMiss) {
     rrc_Lookup l;
     l.hit = false;
     l.age = 0u;
+#ifdef RRC_DEPTH_IN_PAYLOAD
+    l.payload0 = vec4(0.0);
+#endif
     vec4 p = rrc_vCachePos;
     // For a perspective cache-time projection, clip w is the expected linear view depth.
     float expected = p.w;
@@ -111,7 +122,12 @@ rrc_Lookup rrc_lookup(bool forceMiss) {
     } else if (p.w <= 0.0 || any(lessThan(l.uv, vec2(0.0))) || any(greaterThan(l.uv, vec2(1.0)))) {
         l.outcome = RRC_OFFSCREEN;
     } else {
+#ifdef RRC_DEPTH_IN_PAYLOAD
+        l.payload0 = RRC_PAYLOAD0_FETCH(rrc_payload0, l.uv);
+        float cached = l.payload0.RRC_DEPTH_CHANNEL;
+#else
         float cached = rrc_cachedLinearDepth(l.uv);
+#endif
         float tolerance = rrc_tolerance.x * expected + rrc_tolerance.y * slope;
         // Written so that NaN or infinite depths fail the test.
         if (!(abs(cached - expected) <= tolerance)) {
@@ -132,7 +148,11 @@ rrc_Lookup rrc_lookup(bool forceMiss) {
 
 rrc_Lookup rrc_lookup() { return rrc_lookup(false); }
 
+#ifdef RRC_DEPTH_IN_PAYLOAD
+#define rrc_fetchPayload0(l) ((l).payload0)
+#else
 #define rrc_fetchPayload0(l) RRC_PAYLOAD0_FETCH(rrc_payload0, (l).uv)
+#endif
 #define rrc_fetchPayload1(l) RRC_PAYLOAD1_FETCH(rrc_payload1, (l).uv)
 #define rrc_fetchPayload2(l) RRC_PAYLOAD2_FETCH(rrc_payload2, (l).uv)
 #define rrc_fetchPayload3(l) RRC_PAYLOAD3_FETCH(rrc_payload3, (l).uv)

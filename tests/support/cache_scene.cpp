@@ -37,7 +37,11 @@ uniform uint u_frame;
 uniform float u_sampleOffset;
 
 vec4 freshSample() {
-#if SHADING == 0
+#if SHADING == 0 && defined(RRC_DEPTH_IN_PAYLOAD)
+    vec4 s = vec4(v_world, 1.0);
+    s.RRC_DEPTH_CHANNEL = rrc_currentLinearDepth();   // the lookup's cached depth
+    return s;
+#elif SHADING == 0
     return vec4(v_world, 1.0);
 #else
     // Seeded uniform noise per pixel and frame, mean 0.5, variance 1/12.
