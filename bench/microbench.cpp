@@ -54,7 +54,7 @@ struct Bench {
     Result<void> init() {
         auto c = Cache::create({.width = width, .height = height, .payloads = {{.format = payloadFormat, .resample = resample}},
                                 .stats = false, .depthInPayload = depthInPayload, .bilinearDepth = bilinearDepth,
-                                .resampleSnap = resampleSnap});
+                                .resampleSnap = resampleSnap, .stencil = false});   // two-pass without prepass: no stencil
         if (!c) return c.error();
         cache = std::move(c).value();
         library.add(demo::supportShaders());
@@ -70,7 +70,10 @@ struct Bench {
         }
         auto defines = cache.defines();
         defines.push_back({"DEMO_OCTAVES", std::to_string(octaves)});
-        for (const std::string& d : extraDefines) defines.push_back({d});
+        for (const std::string& d : extraDefines) {
+            const auto eq = d.find('=');
+            defines.push_back(eq == std::string::npos ? Define{d} : Define{d.substr(0, eq), d.substr(eq + 1)});
+        }
         auto build = [&](const char* frag, std::vector<Define> extra) -> Result<Program> {
             auto d = defines;
             d.insert(d.end(), extra.begin(), extra.end());
@@ -195,6 +198,10 @@ int main(int argc, char** argv) {
     app.add_option("--resample", b.resample, "payload resampling")->transform(CLI::CheckedTransformer(resamples, CLI::ignore_case));
     app.add_option("--resample-snap", b.resampleSnap, "CacheDesc::resampleSnap in texels (0: off)")->check(CLI::Range(0.0, 0.49));
     app.add_flag("--depth-in-payload", b.depthInPayload, "linear depth in payload alpha (RGBA16F payload), one fetch per lookup");
+    bool quick = false;
+    app.add_flag("--quick", quick, "only the cases of issue 3's targets: full shading, lookup only, static, cut, two-pass 5% clustered");
+    app.add_flag("--pass-timing", b.passTiming, "print each pass's time (glFinish around every pass; slower frames)");
+    app.add_option("--define", b.extraDefines, "extra shader define NAME[=VALUE] (experiments)");
     app.add_option("--override", b.overrides, "replace a shader snippet by a file: NAME=PATH (experiments)")->delimiter(',');
     CLI11_PARSE(app, argc, argv);
     if (b.depthInPayload) b.payloadFormat = GL_RGBA16F;
@@ -218,10 +225,12 @@ int main(int argc, char** argv) {
     for (ControlFlow flow : {ControlFlow::OnePass, ControlFlow::TwoPass})
         for (bool clustered : {true, false})
             for (double f : {0.0, 0.05, 0.10, 0.50, 1.0})
-                records.push_back(b.run(flow == ControlFlow::OnePass ? "one-pass" : "two-pass", f, clustered ? "clustered" : "scattered",
+                if (!quick || (flow == ControlFlow::TwoPass && clustered && f == 0.05))
+                    records.push_back(b.run(flow == ControlFlow::OnePass ? "one-pass" : "two-pass", f, clustered ? "clustered" : "scattered",
                                         [&] { b.cachedFrame(flow, float(f), clustered, true, false); }));
     b.probe = false;
     for (double f : {0.0, 0.05, 0.10})
+        if (!quick)
         records.push_back(b.run("two-pass-no-probe", f, "clustered", [&] { b.cachedFrame(ControlFlow::TwoPass, float(f), true, true, false); }));
     b.probe = true;
     const double full = records[0].timing.median;

@@ -128,11 +128,13 @@ Result<void> Cache::Impl::createTargets() {
         if (desc.age) { t.age = makeTexture(GL_R16UI, desc.width, desc.height, GL_NEAREST); attach(t.age); }
         if (desc.stats) { t.outcomes = makeTexture(GL_R8UI, desc.width, desc.height, GL_NEAREST); attach(t.outcomes); }
         // Stencil marks the pixels the lookup pass resolved, for the miss pass after a prepass.
-        t.depth = makeTexture(GL_DEPTH32F_STENCIL8, desc.width, desc.height, desc.bilinearDepth ? GL_LINEAR : GL_NEAREST);
-        glNamedFramebufferTexture(t.framebuffer.id(), GL_DEPTH_STENCIL_ATTACHMENT, t.depth.id(), 0);
+        const GLenum depthFormat = desc.stencil ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
+        const GLenum depthAttachment = desc.stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+        t.depth = makeTexture(depthFormat, desc.width, desc.height, desc.bilinearDepth ? GL_LINEAR : GL_NEAREST);
+        glNamedFramebufferTexture(t.framebuffer.id(), depthAttachment, t.depth.id(), 0);
         glNamedFramebufferDrawBuffers(t.framebuffer.id(), static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
         if (auto r = checkFramebuffer(t.framebuffer, "rrc::Cache target"); !r) return r;
-        if (desc.stats) {
+        if (desc.stats && desc.stencil) {
             t.stencilOnly = createFramebuffer();
             glNamedFramebufferTexture(t.stencilOnly.id(), GL_DEPTH_STENCIL_ATTACHMENT, t.depth.id(), 0);
             glNamedFramebufferDrawBuffer(t.stencilOnly.id(), GL_NONE);

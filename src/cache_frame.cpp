@@ -126,7 +126,9 @@ void Cache::Impl::clearCurrent() {
     const GLuint zero[4] = {};
     for (bool present : {desc.objectIds, desc.age, desc.stats})
         if (present) glClearNamedFramebufferuiv(fb, GL_COLOR, buffer++, zero);
-    glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, desc.reversedZ ? 0.0f : 1.0f, 0);
+    const float far = desc.reversedZ ? 0.0f : 1.0f;
+    if (desc.stencil) glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, far, 0);
+    else glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far);
 }
 
 Result<void> Cache::Impl::markMisses(bool probe) {
@@ -169,6 +171,8 @@ Result<void> Cache::render(ControlFlow flow, const std::function<void(Pass)>& dr
     if (!impl_) return noCache("Cache::render");
     Impl& s = *impl_;
     if (!s.begun) return fail(LogId::CacheBadArgument, "Cache::render before Cache::beginFrame");
+    if (!s.desc.stencil && flow != ControlFlow::OnePass && s.frameDesc.depthPrepass)
+        return fail(LogId::CacheBadArgument, "Cache::render: TwoPass/ThreePass with FrameDesc::depthPrepass needs CacheDesc::stencil");
     GLint outputFramebuffer = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &outputFramebuffer);
     if (s.staticFrame) {

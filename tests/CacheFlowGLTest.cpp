@@ -29,8 +29,10 @@ TEST_F(CacheFlow, OneTwoAndThreePassFlowsRenderIdenticalImages) {
     // `two` marks misses from its outcome target; `noStats` (no outcome target) by the stencil
     // its lookup pass writes, with the probe drawn by the application.
     Cache one = make(), two = make(), three = make(), noPrepass = make(), noStats = make({.stats = false});
-    CacheScene s1(one), s2(two), s3(three), s4(noPrepass), s5(noStats);
-    std::vector<std::vector<glm::vec4>> images[5];
+    // Without stencil (a plain depth buffer): the flows that need none.
+    Cache oneNoStencil = make({.stencil = false}), twoNoStencil = make({.stencil = false});
+    CacheScene s1(one), s2(two), s3(three), s4(noPrepass), s5(noStats), s6(oneNoStencil), s7(twoNoStencil);
+    std::vector<std::vector<glm::vec4>> images[7];
     for (int f = 0; f < 5; ++f) {
         const glm::dmat4 box = quadAt({-1.0 + 0.37 * f, 0.2 - 0.11 * f, -4}, {0.9, 0.7});
         const glm::dmat4 prevBox = quadAt({-1.0 + 0.37 * (f - 1), 0.2 - 0.11 * (f - 1), -4}, {0.9, 0.7});
@@ -41,6 +43,10 @@ TEST_F(CacheFlow, OneTwoAndThreePassFlowsRenderIdenticalImages) {
         ASSERT_TRUE(s3.frame(three, ControlFlow::ThreePass, camera, objects));
         ASSERT_TRUE(s4.frame(noPrepass, ControlFlow::TwoPass, camera, objects, {.depthPrepass = false}));
         ASSERT_TRUE(s5.frame(noStats, ControlFlow::TwoPass, camera, objects));
+        ASSERT_TRUE(s6.frame(oneNoStencil, ControlFlow::OnePass, camera, objects));
+        ASSERT_TRUE(s7.frame(twoNoStencil, ControlFlow::TwoPass, camera, objects, {.depthPrepass = false}));
+        images[6].push_back(readRGBA(twoNoStencil.payload(0)));
+        images[5].push_back(readRGBA(oneNoStencil.payload(0)));
         images[4].push_back(readRGBA(noStats.payload(0)));
         images[3].push_back(readRGBA(noPrepass.payload(0)));
         images[0].push_back(readRGBA(one.payload(0)));
@@ -58,7 +64,17 @@ TEST_F(CacheFlow, OneTwoAndThreePassFlowsRenderIdenticalImages) {
         EXPECT_EQ(images[1][f], images[2][f]) << "two-pass vs three-pass, frame " << f;
         EXPECT_EQ(images[1][f], images[3][f]) << "two-pass with vs without prepass, frame " << f;
         EXPECT_EQ(images[1][f], images[4][f]) << "two-pass marked by outcome vs by stencil, frame " << f;
+        EXPECT_EQ(images[0][f], images[5][f]) << "one-pass with vs without stencil, frame " << f;
+        EXPECT_EQ(images[3][f], images[6][f]) << "two-pass without prepass, with vs without stencil, frame " << f;
     }
+    // The flow that needs the stencil is refused with a defined error, drawing nothing.
+    LogCapture log;
+    ASSERT_TRUE(twoNoStencil.beginFrame({.view = glm::dmat4(1.0), .projection = Camera{}.projection(1.5, true)}).ok());
+    bool drew = false;
+    EXPECT_FALSE(twoNoStencil.render(ControlFlow::TwoPass, [&](Pass) { drew = true; }).ok());
+    EXPECT_TRUE(log.has(LogId::CacheBadArgument));
+    EXPECT_FALSE(drew);
+    twoNoStencil.endFrame();
 }
 
 TEST_F(CacheFlow, MissPassIsSkippedWhenNothingMissed) {

@@ -37,9 +37,11 @@ struct CacheDesc {
     bool age = false;             // R16UI target: frames since each entry was computed
     bool stats = true;            // R8UI per-pixel outcome target (hit / miss reason), counted
                                   // asynchronously and drawn by visualize()
-    bool depthInPayload = false;  // compare against linear depth stored in payload 0's alpha
-                                  // (the chapter's single-render-target trick) instead of the
-                                  // depth texture; needs a float RGBA payload 0
+    bool depthInPayload = false;  // compare against linear depth stored in payload 0's last channel
+                                  // (alpha; green for RG) instead of the depth texture: the
+                                  // chapter's single-render-target trick, one fetch for the test
+                                  // and the value. Needs payload 0 in RG16F/RG32F/RGBA16F/RGBA32F;
+                                  // the shader writes rrc_currentLinearDepth() there
     bool bilinearDepth = true;    // bilinear cached-depth fetch: across a discontinuity the
                                   // blend fails the test by itself (chapter section 6.4.4)
     float depthTolerance = 0.01f; // relative tolerance on LINEAR view depth, see docs/cache.md
@@ -53,6 +55,11 @@ struct CacheDesc {
                                   // at 1024 texels, 9.8e-4 at 8192): above 8192 use 1/256.
     float maxScale = 0.0f;        // force a miss when the lookup magnifies or minifies by more
                                   // than this factor (0: off, and compiled out of the lookup)
+    bool stencil = true;          // depth buffer with stencil (GL_DEPTH32F_STENCIL8), which
+                                  // TwoPass/ThreePass need with FrameDesc::depthPrepass; false
+                                  // gives a plain GL_DEPTH_COMPONENT32F, ~1-2 ms cheaper per
+                                  // 1024x768 frame on llvmpipe (clears, depth test and writes),
+                                  // for caches used with OnePass or without a prepass only
     bool refresh = false;         // lookups honour FrameDesc::refresh; off compiles the refresh
                                   // schedule out (it costs even when no policy is active)
     glm::vec4 clearColor{0.0f};   // payload value where nothing was drawn
