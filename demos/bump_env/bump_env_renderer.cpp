@@ -15,8 +15,9 @@ Result<void> BumpEnvRenderer::init(int width, int height, const ShaderLibrary& l
     width_ = width;
     height_ = height;
     // RGBA16F with rrc_storeAmortized (unbiased stochastic rounding) keeps the filter from stalling.
+    // No stencil: the cached frame is one lookup pass without prepass (render() below).
     auto cache = Cache::create({.width = width, .height = height, .payloads = {{.format = GL_RGBA16F}}, .age = age,
-                                .stats = stats});
+                                .stats = stats, .stencil = false});
     if (!cache) return cache.error();
     cache_ = std::move(cache).value();
     auto defines = cache_.defines();
