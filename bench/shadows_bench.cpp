@@ -1,7 +1,7 @@
 // rrc-bench's shadows rows (chapter section 6.5.5): k-tap rotated PCF (k = 4, 16) against 4 taps
-// amortized through the cache (lambda 0.6), all taking turns on every frame of one moving
-// sequence (fly-through, walking caster) and compared with 256-tap PCF rendered for the same
-// frame; the lambda sweep runs alongside. Then the convergence after a camera move: the camera
+// amortized through the cache (lambda 0.75, the sweep's lowest error), all taking turns on every
+// frame of one moving sequence (fly-through, walking caster) and compared with 256-tap PCF
+// rendered for the same frame; the lambda sweep runs alongside. Then the convergence after a camera move: the camera
 // jumps and holds still, and the amortized error is tracked frame by frame.
 #include "amortized_support.hpp"
 #include "bench_scenes.hpp"
@@ -82,12 +82,14 @@ void runConvergence(const Options& options, std::vector<std::unique_ptr<ShadowRe
         {Remap::Threshold, "blurred + threshold (fig. 6.9f)", "shadows_amortized_threshold.png"}};
     for (auto [remap, label, file] : figure69) {
         if (options.smoke) break;   // CI's preset: the images are not worth its time
-        for (int f = 0; f < 4; ++f) renderers[0]->render(Variant::Amortized, {.lambda = 0.6f, .blur = true, .remap = remap}, frame(b));
+        for (int f = 0; f < 4; ++f) renderers[0]->render(Variant::Amortized, {.lambda = sweep[0], .blur = true, .remap = remap}, frame(b));
         amortized.images[label] = savePng(options, renderers[0]->color(Variant::Amortized), file);
         if (remap == Remap::None)
             amortized.extra["rmse_blurred_static"] = rmse(readRgba8(renderers[0]->color(Variant::Amortized), w, h), reference);
     }
-    amortized.extra["rmse_converged_static"] = series["amortized_l0.60"].back();
+    char mainSeries[32];
+    std::snprintf(mainSeries, sizeof mainSeries, "amortized_l%.2f", sweep[0]);
+    amortized.extra["rmse_converged_static"] = series[mainSeries].back();
     amortized.extra["rmse_pcf4_static"] = series["pcf4"].front();
     amortized.extra["rmse_pcf16_static"] = series["pcf16"].front();
 }
@@ -119,19 +121,24 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
     const BenchScene& scene = *loaded;
     library.add(demo::commonShaders());
     const int w = options.width, h = options.height;
-    const float sweep[] = {0.6f, 0.4f, 0.75f, 0.9f};   // renderer i amortizes with sweep[i]
+    // Renderer i amortizes with sweep[i]; the main row's lambda, 0.75, has the lowest RMSE on the
+    // moving sequence (the sweep: 0.0159 / 0.0121 / 0.0100 / 0.0104 for 0.4 / 0.6 / 0.75 / 0.9).
+    const float sweep[] = {0.75f, 0.4f, 0.6f, 0.9f};
     std::vector<std::unique_ptr<ShadowRenderer>> renderers;
     // 0-3: the lambdas of `sweep`, with the chapter's plain recursive filter and no stats target
     // (each saves a fetch or a write per pixel: docs/shadows.md); 4: amortized + blur, with both,
     // which also gives the hit rate (every variant follows the same camera path).
-    for (int i = 0; i < 5; ++i) {
+    // 5: the flow comparison, as 0-3 plus the stencil the two-pass flow needs.
+    for (int i = 0; i < 6; ++i) {
         renderers.push_back(std::make_unique<ShadowRenderer>());
-        const CacheFeatures features{.age = i == 4, .stats = i == 4};
+        const CacheFeatures features{.age = i == 4, .stats = i == 4, .stencil = i == 5};
         if (auto r = renderers.back()->init(w, h, library, scene.draws, scene.boundsMin, scene.boundsMax, 2048, features); !r) return {};
     }
-    std::vector<Run> runs = {{"pcf", 4, -1, 0, {}}, {"pcf", 16, -1, 0, {}}, {"amortized", 4, 0.6f, 0, {}}, {"amortized + blur", 4, 0.6f, 4, {}, true},
-                             {"amortized (lambda sweep)", 4, 0.4f, 1, {}}, {"amortized (lambda sweep)", 4, 0.75f, 2, {}},
-                             {"amortized (lambda sweep)", 4, 0.9f, 3, {}}};
+    // The blur row keeps lambda 0.6: the blur already averages over space, and with 0.75 on top
+    // its RMSE rose from 0.0101 to 0.0120 (measured).
+    std::vector<Run> runs = {{"pcf", 4, -1, 0, {}}, {"pcf", 16, -1, 0, {}}, {"amortized", 4, sweep[0], 0, {}}, {"amortized + blur", 4, 0.6f, 4, {}, true},
+                             {"amortized (lambda sweep)", 4, sweep[1], 1, {}}, {"amortized (lambda sweep)", 4, sweep[2], 2, {}},
+                             {"amortized (lambda sweep)", 4, sweep[3], 3, {}}};
     const glm::dmat4 projection = demo::perspective(0.9, double(w) / h, 0.1);
     const demo::FlyPath path = cameraPath({scene.boundsMin, scene.boundsMax});
     auto frameAt = [&](int f, double t, const glm::dmat4& view) {
@@ -196,7 +203,7 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
         r.psnr = psnr(*r.rmse);
         const std::string stem = "shadows_" + std::string(run.lambda < 0 ? "pcf" : "amortized") + std::to_string(run.taps) +
                                  (run.lambda >= 0 ? "_l" + std::to_string(int(run.lambda * 100 + 0.5)) : "");
-        if ((run.lambda == 0.6f && run.renderer == 0) || run.lambda < 0) {
+        if ((run.lambda >= 0 && run.renderer == 0) || run.lambda < 0) {
             // The last frame was rendered in the loop; render it again only for the PCF variants
             // (their image is overwritten by the next variant), the cache state stays as it was.
             if (run.lambda < 0) render(run, lastFrame);
@@ -204,7 +211,7 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
             r.images["frame"] = savePng(options, color, stem + ".png");
             saveRgba8Difference(options, readRgba8(color, w, h), refLast, w, h, 4.0f, stem + "_diff.png", r, "difference x4");
         }
-        if (run.lambda == 0.6f && run.renderer == 0) {
+        if (run.lambda >= 0 && run.renderer == 0) {
             r.hitRate = lookups > 0 ? hits / lookups : 0.0;
             Texture vis;
             renderers[4]->cache().visualize(vis);
@@ -216,7 +223,7 @@ std::vector<Record> runShadows(const Options& options, ShaderLibrary& library) {
     }
     records.push_back(std::move(ref));
     Record& amortized = *std::find_if(records.begin(), records.end(), [](const Record& r) { return r.variant == "amortized"; });
-    if (!options.smoke) compareFlows(options, *renderers[1], [&](int f) { const double t = t0 + f / 60.0; return frameAt(f, t, viewAt(t)); }, amortized);
+    if (!options.smoke) compareFlows(options, *renderers[5], [&](int f) { const double t = t0 + f / 60.0; return frameAt(f, t, viewAt(t)); }, amortized);
     runConvergence(options, renderers, sweep, records, path, projection);
     return records;
 }

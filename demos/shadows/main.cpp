@@ -1,6 +1,6 @@
 // rrc-shadows: shadow-map PCF with k Poisson taps rotated per pixel and frame (chapter section
 // 6.5.5). --mode brute: plain k-tap PCF; --mode cached: the same k taps amortized through the
-// reprojection cache with the recursive filter (--lambda, 3/5 by default), optionally blurred,
+// reprojection cache with the recursive filter (--lambda, 0.75 by default), optionally blurred,
 // remapped or thresholded (fig. 6.9). A box walks through the colonnade casting a moving shadow.
 #include "shadow_renderer.hpp"
 #include "shadow_scene.hpp"
@@ -33,7 +33,7 @@ struct State {
 
 Result<void> initRenderer(demo::App& app) {
     return state.renderer.init(app.width(), app.height(), app.shaders(), state.scene.draws, state.scene.boundsMin,
-                               state.scene.boundsMax);
+                               state.scene.boundsMax, 2048, {.stencil = state.settings.flow == Flow::TwoPass});
 }
 
 demo::DemoDesc shadowsDemo() {

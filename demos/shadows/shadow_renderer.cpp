@@ -46,11 +46,14 @@ Result<void> ShadowRenderer::init(int width, int height, const ShaderLibrary& li
     scene_.assign(scene.begin(), scene.end());
     center_ = 0.5 * (boundsMin + boundsMax);
     radius_ = 0.65 * glm::length(boundsMax - boundsMin) + 2.0;
-    // Visibility amortizes in R32F: exact stores, no rounding bias in the recursive filter.
+    // Visibility amortizes in 32-bit float: exact stores, no rounding bias in the recursive filter.
+    const GLenum visibilityFormat = features.depthInPayload ? GL_RG32F : GL_R32F;
     auto cache = Cache::create({.width = width, .height = height,
-                                .payloads = {{.format = GL_R32F, .resample = features.bilinear ? Resample::Bilinear : Resample::Nearest},
+                                .payloads = {{.format = visibilityFormat, .resample = features.bilinear ? Resample::Bilinear : Resample::Nearest},
                                              {.format = GL_RGBA8, .resample = Resample::Nearest}},
-                                .age = features.age, .stats = features.stats, .bilinearDepth = features.bilinear});
+                                .age = features.age, .stats = features.stats, .depthInPayload = features.depthInPayload,
+                                .bilinearDepth = features.bilinear, .resampleSnap = features.resampleSnap,
+                                .stencil = features.stencil});
     if (!cache) return cache.error();
     cache_ = std::move(cache).value();
     for (int amortized = 0; amortized < 2; ++amortized)
@@ -94,7 +97,8 @@ Result<void> ShadowRenderer::init(int width, int height, const ShaderLibrary& li
     pcf_.color = demo::makeTexture2D(GL_RGBA8, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
     pcf_.depth = demo::makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
     auto pcfFb = makeFramebuffer({pcf_.visibility.id(), pcf_.color.id()}, pcf_.depth.id(), "PCF target");
-    blurred_ = demo::makeTexture2D(GL_R32F, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    // The blur's result is copied back into the cache's visibility payload: the same format.
+    blurred_ = demo::makeTexture2D(visibilityFormat, width, height, GL_NEAREST, GL_CLAMP_TO_EDGE);
     auto blurFb = makeFramebuffer({blurred_.id()}, 0, "blur target");
     if (!shadowFb) return shadowFb.error();
     if (!pcfFb) return pcfFb.error();

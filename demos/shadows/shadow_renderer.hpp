@@ -32,7 +32,8 @@ enum class Remap { None = 0, Smoothstep = 1, Threshold = 2 };
 
 struct ShadowSettings {
     int taps = 4;                 // k, 1..256
-    float lambda = 0.6f;          // recursive filter weight (amortized)
+    float lambda = 0.75f;         // recursive filter weight (amortized): the lowest RMSE on the
+                                  // moving sequence of rrc-bench (docs/shadows.md)
     bool blur = false;            // depth-aware 5x5 blur of the visibility (fed back into the cache)
     Remap remap = Remap::None;
     float radius = 0.25f;         // PCF filter radius, metres on the light's image plane
@@ -54,6 +55,13 @@ struct CacheFeatures {
     bool stats = true;
     bool bilinear = true;   // false: nearest cached depth and visibility (plain texel fetches);
                             // visibility is smooth across a pixel, so little is lost
+    bool depthInPayload = true;   // visibility and linear depth in one RG32F payload: the lookup's
+                                  // depth test and the blend share a single fetch
+    bool stencil = false;         // CacheDesc::stencil: only Flow::TwoPass needs it (the
+                                  // cache refuses that flow without); off saves 1-2 ms a frame
+    float resampleSnap = 0.0f;    // CacheDesc::resampleSnap: off, since 32-bit float stores are
+                                  // exact (the snap guards against float16 truncation drift under
+                                  // a static view) and it costs ~1 ms per 1024x768 frame
 };
 
 class ShadowRenderer {

@@ -22,5 +22,6 @@ void main() {
             sum += w * texelFetch(u_visibility, p, 0).r;
             weights += w;
         }
-    o_visibility = vec4(sum / weights);
+    // Channel g passes through: the cache's linear depth when it shares the payload.
+    o_visibility = vec4(sum / weights, texelFetch(u_visibility, c, 0).g, 0.0, 0.0);
 }

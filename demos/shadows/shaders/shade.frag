@@ -7,6 +7,7 @@
 //                 path (no divergent branch): only the blend depends on the lookup.
 //   PASS_LOOKUP   (two-pass flow) misses discard and are left to the PASS_MISS program
 //   DEFERRED      colour output holds albedo and N.L for the composite pass (blur, remap, threshold)
+//   RRC_DEPTH_IN_PAYLOAD  (from the cache) the visibility payload also stores linear depth in g
 #include "pcf.glsl"
 #ifdef AMORTIZED
 #include <rrc/lookup.frag>
@@ -40,7 +41,11 @@ void main() {
     visibility = rrc_storeAmortized(vec4(visibility)).r;
     rrc_writeCache(l);
 #endif
+#if defined(AMORTIZED) && defined(RRC_DEPTH_IN_PAYLOAD)
+    o_visibility = vec4(visibility, rrc_currentLinearDepth(), 0.0, 0.0);   // depth: next frame's lookup
+#else
     o_visibility = vec4(visibility);
+#endif
 #ifdef DEFERRED
     o_color = vec4(u_baseColor.rgb, nDotL);
 #else
