@@ -4,8 +4,7 @@
 // renders the first in full and every later one through the previous view's cache. N is live.
 #include "lens.hpp"
 
-#include "accumulation/accumulation_renderer.hpp"
-#include "common/app.hpp"
+#include "accumulation/demo_hooks.hpp"
 #include "support/scene_draws.hpp"
 #include "support/timing.hpp"
 
@@ -21,17 +20,11 @@ namespace {
 using namespace rrc;
 using accumulation::Variant;
 
-struct State {
-    int samples = 8;
-    int octaves = 8;
+struct State : accumulation::DemoState {
     float aperture = 0.12f;   // lens radius, metres
     float focus = 9.0f;       // distance of the focal plane, metres
     bool randomOrder = false;
-    uint32_t refreshPeriod = 4;
     demo::DrawScene scene;
-    accumulation::AccumulationRenderer renderer;
-    Texture visualization;
-    Variant variant = Variant::Cached;
 } state;
 
 demo::DemoDesc depthOfFieldDemo() {
@@ -55,9 +48,6 @@ demo::DemoDesc depthOfFieldDemo() {
         return state.renderer.init(app.width(), app.height(), app.shaders(),
                                    {.octaves = state.octaves, .refreshPeriod = state.refreshPeriod});
     };
-    d.onResize = [](demo::App& app, int width, int height) {
-        return state.renderer.init(width, height, app.shaders(), state.renderer.settings());
-    };
     d.frame = [](demo::App& app, const demo::FrameInfo&) {
         state.variant = app.mode() == demo::Mode::Brute ? Variant::Brute : Variant::Cached;
         const auto lens = dof::ordered(dof::poissonDisk(state.samples, app.seed()),
@@ -68,19 +58,7 @@ demo::DemoDesc depthOfFieldDemo() {
             return accumulation::SampleView{dof::lensView(view, lens[size_t(i)] * double(state.aperture), state.focus), projection};
         });
     };
-    d.outputs = [](demo::App&) {
-        demo::Outputs o{.color = state.renderer.result()};
-        if (state.variant == Variant::Cached) {
-            state.renderer.cache().visualize(state.visualization);   // the last view's hits
-            o.visualization = state.visualization.id();
-        }
-        return o;
-    };
-    d.stats = [](demo::App&) {
-        demo::Stats s{{"samples", double(state.samples)}};
-        if (state.variant == Variant::Cached) s["hit_rate"] = state.renderer.cache().stats().hitRate();
-        return s;
-    };
+    accumulation::addCommonHooks(d, state);
     d.gui = [](demo::App&) {
         ImGui::Begin("depth of field");
         ImGui::SliderInt("samples N", &state.samples, 1, 64);

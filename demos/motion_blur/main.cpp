@@ -4,8 +4,7 @@
 // the first in full and every later one through the previous sample's cache. N is live in a window.
 #include "shutter.hpp"
 
-#include "accumulation/accumulation_renderer.hpp"
-#include "common/app.hpp"
+#include "accumulation/demo_hooks.hpp"
 #include "support/scene_draws.hpp"
 #include "support/timing.hpp"
 
@@ -21,20 +20,13 @@ namespace {
 using namespace rrc;
 using accumulation::Variant;
 
-struct State {
-    int samples = 8;
-    int octaves = 8;
+struct State : accumulation::DemoState {
     bool neverCacheCharacter = false;
     std::string flow = "two-pass";
-    bool noStats = false;
-    uint32_t refreshPeriod = 4;
     std::string characterPath = "assets/character.glb";
     motion_blur::Shot shot;
     demo::DrawScene scene;
     accumulation::Character character;
-    accumulation::AccumulationRenderer renderer;
-    Texture visualization;
-    Variant variant = Variant::Cached;
 } state;
 
 void renderFrame(double time) {
@@ -78,26 +70,11 @@ demo::DemoDesc motionBlurDemo() {
                                     .probe = state.flow == "two-pass", .stats = !state.noStats,
                                     .refreshPeriod = state.refreshPeriod});
     };
-    d.onResize = [](demo::App& app, int width, int height) {
-        return state.renderer.init(width, height, app.shaders(), state.renderer.settings());
-    };
     d.frame = [](demo::App& app, const demo::FrameInfo& info) {
         state.variant = app.mode() == demo::Mode::Brute ? Variant::Brute : Variant::Cached;
         renderFrame(info.time);
     };
-    d.outputs = [](demo::App&) {
-        demo::Outputs o{.color = state.renderer.result()};
-        if (state.variant == Variant::Cached && !state.noStats) {
-            state.renderer.cache().visualize(state.visualization);   // the last sample's hits
-            o.visualization = state.visualization.id();
-        }
-        return o;
-    };
-    d.stats = [](demo::App&) {
-        demo::Stats s{{"samples", double(state.samples)}};
-        if (state.variant == Variant::Cached) s["hit_rate"] = state.renderer.cache().stats().hitRate();
-        return s;
-    };
+    accumulation::addCommonHooks(d, state);
     d.gui = [](demo::App&) {
         ImGui::Begin("motion blur");
         ImGui::SliderInt("samples N", &state.samples, 1, 64);
