@@ -35,9 +35,12 @@ int main(int argc, char** argv) {
     app.add_option("--out", o.outDir, "output folder")->default_val("out");
     app.add_option("--backend", backendOption, "auto, egl, osmesa or glfw")->default_val("auto");
     app.add_option("--size", size, "frame size WxH")->default_val("1024x768");
-    app.add_option("--frames", o.frames, "measured frames per variant")->check(CLI::Range(1, 100000));
-    app.add_option("--warmup", o.warmup, "unmeasured frames first")->check(CLI::Range(0, 1000));
-    app.add_option("--scene", o.scene, "glTF scene, or 'procedural'")->default_val("assets/temple.glb");
+    app.add_option("--frames", o.frames,
+                   "measured frames per variant (stereo; shadows and bump_env take half; motion blur and depth of field "
+                   "time fixed frames of their sweeps)")->check(CLI::Range(1, 100000));
+    app.add_option("--warmup", o.warmup, "unmeasured frames first (stereo, shadows, bump_env)")->check(CLI::Range(0, 1000));
+    app.add_option("--scene", o.scene, "glTF scene, or 'procedural' (stereo, shadows; the other demos have their own)")
+        ->default_val("assets/temple.glb");
     std::string known;
     for (const auto& d : bench::registeredDemos()) known += (known.empty() ? "" : ", ") + d.name;
     app.add_option("--demos", demos, "comma-separated demos to run (" + known + "), or all")->default_val("all");
