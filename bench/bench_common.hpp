@@ -20,7 +20,7 @@ struct Options {
     std::string scene = "assets/temple.glb";
     bool smoke = false, full = false;
     double eyeSeparation = 0.065;   // stereo: metres (human interocular distance)
-    std::string flow = "two-pass";  // cached variants: one-pass, two-pass, two-pass-no-probe
+    std::string flow = "one-pass";  // cached variants: one-pass, two-pass, two-pass-no-probe
 
     ControlFlow cachedFlow() const { return flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass; }
     bool probe() const { return flow == "two-pass"; }   // FrameDesc::skipEmptyMissPass

@@ -14,7 +14,8 @@ Result<void> AccumulationRenderer::init(int width, int height, ShaderLibrary& li
     // RGBA8 payload: the colour before accumulation is 8-bit in both variants (brute's target too).
     auto cache = Cache::create({.width = width, .height = height,
                                 .payloads = {{.format = GL_RGBA8, .resample = settings_.resample}},
-                                .stats = settings_.stats, .refresh = settings_.refreshPeriod > 0, .clearColor = settings.background});
+                                .stats = settings_.stats, .stencil = settings_.flow != ControlFlow::OnePass,
+                                .refresh = settings_.refreshPeriod > 0, .clearColor = settings.background});
     if (!cache) return cache.error();
     cache_ = std::move(cache).value();
     for (bool skinned : {false, true}) {

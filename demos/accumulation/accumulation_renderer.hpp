@@ -33,7 +33,7 @@ struct SceneRef {
 
 struct RendererSettings {
     int octaves = 8;                      // DEMO_OCTAVES of the marble
-    ControlFlow flow = ControlFlow::TwoPass;
+    ControlFlow flow = ControlFlow::OnePass;   // measured fastest on llvmpipe (docs/motion_blur.md)
     bool probe = true;                    // TwoPass: skip an empty miss pass
     bool stats = true;                    // per-pixel outcomes counted (hitRate(), visualize())
     uint32_t refreshPeriod = 4;           // > 0: every 8x8 block is shaded afresh every this many

@@ -22,7 +22,7 @@ using accumulation::Variant;
 
 struct State : accumulation::DemoState {
     bool neverCacheCharacter = false;
-    std::string flow = "two-pass";
+    std::string flow = "one-pass";   // measured fastest on llvmpipe (docs/motion_blur.md)
     std::string characterPath = "assets/character.glb";
     motion_blur::Shot shot;
     demo::DrawScene scene;
