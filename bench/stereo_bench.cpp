@@ -33,8 +33,8 @@ std::vector<Record> runStereo(const Options& options, ShaderLibrary& library) {
     const BenchScene& scene = *loaded;
     std::fprintf(stderr, "stereo: scene %s\n", scene.name.c_str());
     stereo::StereoRenderer renderer;
+    renderer.setFlow(options.cachedFlow(), options.probe());   // before init: it decides the caches' stencil
     if (auto r = renderer.init(options.width, options.height, library); !r) return {};
-    renderer.setFlow(options.cachedFlow(), options.probe());
     const glm::dmat4 projection = perspectiveReversedZ(0.9, double(options.width) / options.height, 0.1);
     const double separation = options.eyeSeparation;
     const demo::FlyPath path = demo::FlyPath::colonnade({scene.boundsMin, scene.boundsMax});

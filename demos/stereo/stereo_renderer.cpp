@@ -28,9 +28,10 @@ EyeViews eyeViews(const glm::dmat4& centerView, const glm::dmat4& projection, do
 Result<void> StereoRenderer::init(int width, int height, ShaderLibrary& library, int octaves) {
     width_ = width;
     height_ = height;
-    auto cache = Cache::create({.width = width, .height = height, .payloads = {{.format = GL_RGBA8}}});
+    const bool stencil = flow_ != ControlFlow::OnePass;   // only the two-pass flow's prepass needs it
+    auto cache = Cache::create({.width = width, .height = height, .payloads = {{.format = GL_RGBA8}}, .stencil = stencil});
     auto cacheVD = Cache::create({.width = width, .height = height,
-                                  .payloads = {{.format = GL_RGBA8}, {.format = GL_RGBA16F}}});
+                                  .payloads = {{.format = GL_RGBA8}, {.format = GL_RGBA16F}}, .stencil = stencil});
     if (!cache) return cache.error();
     if (!cacheVD) return cacheVD.error();
     cache_ = std::move(cache).value();

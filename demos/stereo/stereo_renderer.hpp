@@ -23,7 +23,8 @@ EyeViews eyeViews(const glm::dmat4& centerView, const glm::dmat4& projection, do
 class StereoRenderer {
 public:
     Result<void> init(int width, int height, ShaderLibrary& library, int octaves = 5);
-    // The cached variants' control flow (default TwoPass with probe).
+    // The cached variants' control flow (default OnePass; `probe`: TwoPass skips an empty miss
+    // pass). Call before init(): the caches of a one-pass flow need no stencil (CacheDesc::stencil).
     void setFlow(ControlFlow flow, bool probe) { flow_ = flow; probe_ = probe; }
     void render(Variant variant, const EyeViews& eyes, std::span<const demo::DrawCall> scene);
     // Cached variants: the left eye once more over a cache holding that same left eye (every
