@@ -4,6 +4,7 @@
 #include <rrc/cache.hpp>
 #include <rrc/image.hpp>
 
+#include "support/flow_option.hpp"
 #include "support/timing.hpp"
 
 #include <map>
@@ -22,8 +23,8 @@ struct Options {
     double eyeSeparation = 0.065;   // stereo: metres (human interocular distance)
     std::string flow = "one-pass";  // cached variants: one-pass, two-pass, two-pass-no-probe
 
-    ControlFlow cachedFlow() const { return flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass; }
-    bool probe() const { return flow == "two-pass"; }   // FrameDesc::skipEmptyMissPass
+    ControlFlow cachedFlow() const { return demo::flowNamed(flow); }
+    bool probe() const { return demo::probeNamed(flow); }   // FrameDesc::skipEmptyMissPass
 };
 
 struct Record {

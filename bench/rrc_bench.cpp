@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     for (const auto& d : bench::registeredDemos()) known += (known.empty() ? "" : ", ") + d.name;
     app.add_option("--demos", demos, "comma-separated demos to run (" + known + "), or all")->default_val("all");
     app.add_option("--eye-separation", o.eyeSeparation, "stereo: distance between the eyes, scene units")->default_val(0.065);
-    app.add_option("--flow", o.flow, "cached control flow")->check(CLI::IsMember({"one-pass", "two-pass", "two-pass-no-probe"}))->default_val("one-pass");
+    app.add_option("--flow", o.flow, "cached control flow")->check(CLI::IsMember(demo::kFlowNames))->default_val("one-pass");
     app.add_flag("--smoke", o.smoke, "small and quick: 256x192, few frames (CI)");
     app.add_flag("--full", o.full, "longer runs and sweeps");
     CLI11_PARSE(app, argc, argv);

@@ -5,6 +5,7 @@
 #include "shutter.hpp"
 
 #include "accumulation/demo_hooks.hpp"
+#include "support/flow_option.hpp"
 #include "support/scene_draws.hpp"
 #include "support/timing.hpp"
 
@@ -48,8 +49,7 @@ demo::DemoDesc motionBlurDemo() {
         app.add_option("--shutter", state.shot.shutter, "seconds the shutter is open")->check(CLI::Range(0.0, 1.0));
         app.add_option("--octaves", state.octaves, "Perlin octaves of the marble")->check(CLI::Range(1, 12));
         app.add_option("--character", state.characterPath, "skinned glTF with a 'heroine' node and a 'run' clip");
-        app.add_option("--flow", state.flow, "cached control flow")
-            ->check(CLI::IsMember({"one-pass", "two-pass", "two-pass-no-probe"}));
+        app.add_option("--flow", state.flow, "cached control flow")->check(CLI::IsMember(demo::kFlowNames));
         app.add_option("--refresh-period", state.refreshPeriod, "shade every 8x8 block afresh every this many samples (0: never)");
         app.add_flag("--no-stats", state.noStats, "no per-pixel outcome statistics (hit rate, hit/miss image)");
         app.add_flag("--never-cache-character", state.neverCacheCharacter,
@@ -66,8 +66,8 @@ demo::DemoDesc motionBlurDemo() {
         app.shaders().add(accumulation::shaders());
         return state.renderer.init(app.width(), app.height(), app.shaders(),
                                    {.octaves = state.octaves,
-                                    .flow = state.flow == "one-pass" ? ControlFlow::OnePass : ControlFlow::TwoPass,
-                                    .probe = state.flow == "two-pass", .stats = !state.noStats,
+                                    .flow = demo::flowNamed(state.flow), .probe = demo::probeNamed(state.flow),
+                                    .stats = !state.noStats,
                                     .refreshPeriod = state.refreshPeriod});
     };
     d.frame = [](demo::App& app, const demo::FrameInfo& info) {
