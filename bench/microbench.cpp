@@ -227,11 +227,11 @@ int main(int argc, char** argv) {
             for (double f : {0.0, 0.05, 0.10, 0.50, 1.0})
                 if (!quick || (flow == ControlFlow::TwoPass && clustered && f == 0.05))
                     records.push_back(b.run(flow == ControlFlow::OnePass ? "one-pass" : "two-pass", f, clustered ? "clustered" : "scattered",
-                                        [&] { b.cachedFrame(flow, float(f), clustered, true, false); }));
+                                            [&] { b.cachedFrame(flow, float(f), clustered, true, false); }));
     b.probe = false;
     for (double f : {0.0, 0.05, 0.10})
         if (!quick)
-        records.push_back(b.run("two-pass-no-probe", f, "clustered", [&] { b.cachedFrame(ControlFlow::TwoPass, float(f), true, true, false); }));
+            records.push_back(b.run("two-pass-no-probe", f, "clustered", [&] { b.cachedFrame(ControlFlow::TwoPass, float(f), true, true, false); }));
     b.probe = true;
     const double full = records[0].timing.median;
     std::fprintf(stderr, "relative to full shading (%.2f ms): lookup-only %.1f%%, static %.1f%%, camera cut %.1f%%\n", full,

@@ -1,8 +1,8 @@
 // rrc-bench's shadows rows (chapter section 6.5.5): k-tap rotated PCF (k = 4, 16) against 4 taps
 // amortized through the cache (lambda 0.75, the sweep's lowest error), all taking turns on every
 // frame of one moving sequence (fly-through, walking caster) and compared with 256-tap PCF
-// rendered for the same frame; the lambda sweep runs alongside. Then the convergence after a camera move: the camera
-// jumps and holds still, and the amortized error is tracked frame by frame.
+// rendered for the same frame; the lambda sweep runs alongside. Then the convergence after a
+// camera move: the camera jumps and holds still, and the amortized error is tracked frame by frame.
 #include "amortized_support.hpp"
 #include "bench_scenes.hpp"
 
